@@ -1,0 +1,37 @@
+// BatchEvaluator<F>: f at many points per walk of the tape. Slots hold a
+// fixed number of lanes in structure-of-arrays form, and each clause runs a
+// tight loop over its lanes that the compiler turns into SIMD — so the
+// interpretation cost (one op dispatch per clause) is paid once per `lanes`
+// points instead of once per point.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "zeroset/expr/tape.hpp"
+
+namespace zeroset {
+
+template <class F>
+class BatchEvaluator {
+public:
+    static constexpr std::size_t lanes = 64;
+
+    explicit BatchEvaluator(const Tape& tape);
+
+    /// out[i] = f(x[i], y[i], z[i]) for every i; all spans of equal length.
+    void evaluate(std::span<const F> x, std::span<const F> y, std::span<const F> z, std::span<F> out);
+
+private:
+    void evaluate_lanes();
+    F* slot(std::uint32_t s) { return slots_.data() + static_cast<std::size_t>(s) * lanes; }
+
+    const Tape* tape_;
+    std::vector<F> slots_;  // slot-major: slot s occupies [s·lanes, (s+1)·lanes)
+};
+
+extern template class BatchEvaluator<float>;
+extern template class BatchEvaluator<double>;
+
+}  // namespace zeroset

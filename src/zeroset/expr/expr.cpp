@@ -1,0 +1,189 @@
+// Hash-consing, constant folding and printing for Expr.
+#include "zeroset/expr/expr.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <functional>
+#include <mutex>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "zeroset/math/scalar.hpp"
+
+namespace zeroset {
+
+namespace {
+
+struct Key {
+    Op op;
+    int exponent;
+    std::uint64_t value_bits;
+    const void* a;
+    const void* b;
+    bool operator==(const Key&) const = default;
+};
+
+struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+        std::size_t h = std::hash<std::uint64_t>{}(k.value_bits);
+        const auto mix = [&h](std::size_t v) { h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
+        mix(static_cast<std::size_t>(k.op));
+        mix(static_cast<std::size_t>(k.exponent));
+        mix(std::hash<const void*>{}(k.a));
+        mix(std::hash<const void*>{}(k.b));
+        return h;
+    }
+};
+
+/// The table of live nodes. Entries are weak, so unused expressions are freed;
+/// dead entries are swept whenever the table has doubled since the last sweep.
+struct InternTable {
+    std::mutex mutex;
+    std::unordered_map<Key, std::weak_ptr<const ExprNode>, KeyHash> nodes;
+    std::size_t sweep_at = 1024;
+};
+
+InternTable& table() {
+    static auto* t = new InternTable;  // never destroyed: Exprs may outlive static destruction
+    return *t;
+}
+
+}  // namespace
+
+Expr Expr::intern(Op op, double value, int n, const Expr* a, const Expr* b) {
+    const Key key{op, n, std::bit_cast<std::uint64_t>(value), a ? a->id() : nullptr, b ? b->id() : nullptr};
+    InternTable& t = table();
+    std::lock_guard lock(t.mutex);
+    if (auto it = t.nodes.find(key); it != t.nodes.end()) {
+        if (auto live = it->second.lock()) return Expr(std::move(live));
+    }
+    const bool is_var = op == Op::VarX || op == Op::VarY || op == Op::VarZ;
+    const bool constant_valued =
+        !is_var && (!a || a->is_constant_valued()) && (!b || b->is_constant_valued());
+    auto node = std::make_shared<const ExprNode>(
+        ExprNode{op, n, value, constant_valued, a ? a->node_ : nullptr, b ? b->node_ : nullptr});
+    t.nodes[key] = node;
+    if (t.nodes.size() >= t.sweep_at) {
+        std::erase_if(t.nodes, [](const auto& entry) { return entry.second.expired(); });
+        t.sweep_at = std::max<std::size_t>(1024, 2 * t.nodes.size());
+    }
+    return Expr(std::move(node));
+}
+
+Expr::Expr() : Expr(0.0) {}
+Expr::Expr(double constant) : node_(intern(Op::Const, constant, 0, nullptr, nullptr).node_) {}
+
+Op Expr::op() const { return node_->op; }
+double Expr::value() const { return node_->value; }
+int Expr::exponent() const { return node_->exponent; }
+Expr Expr::operand(int i) const { return Expr(i == 0 ? node_->a : node_->b); }
+bool Expr::is_constant_valued() const { return node_->constant_valued; }
+
+Expr var_x() { return Expr::intern(Op::VarX, 0.0, 0, nullptr, nullptr); }
+Expr var_y() { return Expr::intern(Op::VarY, 0.0, 0, nullptr, nullptr); }
+Expr var_z() { return Expr::intern(Op::VarZ, 0.0, 0, nullptr, nullptr); }
+
+Expr Expr::make(Op op, const Expr& a, const Expr& b, int n) {
+    const int arity = op_arity(op);
+    // Constant folding: an op over constants is the constant it evaluates to.
+    if (arity >= 1 && a.is_constant() && (arity < 2 || b.is_constant())) {
+        return Expr(apply_op<double>(op, a.value(), arity == 2 ? b.value() : 0.0, n));
+    }
+    // Operand order does not matter for these: keep one canonical order so
+    // that a + b and b + a share a node.
+    const bool commutative = op == Op::Add || op == Op::Mul || op == Op::Min || op == Op::Max;
+    if (commutative && std::less<const void*>{}(b.id(), a.id())) return intern(op, 0.0, n, &b, &a);
+    return intern(op, 0.0, n, &a, arity == 2 ? &b : nullptr);
+}
+
+std::size_t Expr::node_count() const {
+    std::unordered_set<const void*> seen;
+    std::vector<const ExprNode*> stack{node_.get()};
+    while (!stack.empty()) {
+        const ExprNode* n = stack.back();
+        stack.pop_back();
+        if (!n || !seen.insert(n).second) continue;
+        stack.push_back(n->a.get());
+        stack.push_back(n->b.get());
+    }
+    return seen.size();
+}
+
+std::string Expr::to_string() const {
+    std::ostringstream out;
+    out.precision(17);
+    switch (op()) {
+        case Op::Const: out << value(); break;
+        case Op::VarX: out << "x"; break;
+        case Op::VarY: out << "y"; break;
+        case Op::VarZ: out << "z"; break;
+        case Op::Add: out << "(" << operand(0).to_string() << " + " << operand(1).to_string() << ")"; break;
+        case Op::Sub: out << "(" << operand(0).to_string() << " - " << operand(1).to_string() << ")"; break;
+        case Op::Mul: out << "(" << operand(0).to_string() << " * " << operand(1).to_string() << ")"; break;
+        case Op::Div: out << "(" << operand(0).to_string() << " / " << operand(1).to_string() << ")"; break;
+        case Op::Neg: out << "-" << operand(0).to_string(); break;
+        case Op::Powi: out << operand(0).to_string() << "^" << exponent(); break;
+        default:
+            out << op_name(op()) << "(" << operand(0).to_string();
+            if (op_arity(op()) == 2) out << ", " << operand(1).to_string();
+            out << ")";
+    }
+    return out.str();
+}
+
+std::optional<Op> op_from_name(std::string_view name) {
+    for (int i = 0; i < op_count; ++i) {
+        const auto op = static_cast<Op>(i);
+        if (op_name(op) == name) return op;
+    }
+    return std::nullopt;
+}
+
+Expr operator+(const Expr& a, const Expr& b) {
+    if (a.is_constant() && a.value() == 0.0) return b;
+    if (b.is_constant() && b.value() == 0.0) return a;
+    return Expr::make(Op::Add, a, b);
+}
+Expr operator-(const Expr& a, const Expr& b) {
+    if (b.is_constant() && b.value() == 0.0) return a;
+    return Expr::make(Op::Sub, a, b);
+}
+Expr operator*(const Expr& a, const Expr& b) {
+    if (a.is_constant() && a.value() == 1.0) return b;
+    if (b.is_constant() && b.value() == 1.0) return a;
+    return Expr::make(Op::Mul, a, b);
+}
+Expr operator/(const Expr& a, const Expr& b) {
+    if (b.is_constant() && b.value() == 1.0) return a;
+    return Expr::make(Op::Div, a, b);
+}
+Expr operator-(const Expr& a) {
+    if (a.op() == Op::Neg) return a.operand(0);
+    return Expr::make(Op::Neg, a);
+}
+Expr square(const Expr& a) { return Expr::make(Op::Square, a); }
+Expr sqrt(const Expr& a) { return Expr::make(Op::Sqrt, a); }
+Expr abs(const Expr& a) { return Expr::make(Op::Abs, a); }
+Expr exp(const Expr& a) { return Expr::make(Op::Exp, a); }
+Expr log(const Expr& a) { return Expr::make(Op::Log, a); }
+Expr sin(const Expr& a) { return Expr::make(Op::Sin, a); }
+Expr cos(const Expr& a) { return Expr::make(Op::Cos, a); }
+Expr powi(const Expr& a, int n) {
+    if (n == 0) return Expr(1.0);
+    if (n == 1) return a;
+    if (n == 2) return square(a);
+    return Expr::make(Op::Powi, a, Expr(), n);
+}
+Expr pow(const Expr& a, const Expr& b) {
+    if (b.is_constant()) {
+        const double p = b.value();
+        if (p == std::round(p) && std::abs(p) <= 1024.0) return powi(a, static_cast<int>(p));
+    }
+    return Expr::make(Op::Pow, a, b);
+}
+Expr min(const Expr& a, const Expr& b) { return a == b ? a : Expr::make(Op::Min, a, b); }
+Expr max(const Expr& a, const Expr& b) { return a == b ? a : Expr::make(Op::Max, a, b); }
+
+}  // namespace zeroset

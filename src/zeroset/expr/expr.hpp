@@ -1,0 +1,91 @@
+// Expr: an implicit function f(x, y, z) as a hash-consed expression DAG.
+// Building the same subexpression twice returns the same node, so shared
+// structure is found for free and a tape evaluates it once. Nodes are
+// immutable and shared; an Expr is a cheap handle.
+//
+//   Expr f = sqrt(square(X) + square(Y) + square(Z)) - 1.0;
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "zeroset/expr/op.hpp"
+
+namespace zeroset {
+
+struct ExprNode;
+
+class Expr {
+public:
+    Expr();  // the constant 0
+    Expr(double constant);  // NOLINT: implicit, so `x * 2` reads naturally
+
+    [[nodiscard]] Op op() const;
+    /// The value of a Const node.
+    [[nodiscard]] double value() const;
+    /// The integer exponent of a Powi node.
+    [[nodiscard]] int exponent() const;
+    /// Operand i (0 or 1); only valid below op_arity(op()).
+    [[nodiscard]] Expr operand(int i) const;
+    [[nodiscard]] bool is_constant() const { return op() == Op::Const; }
+    /// True when no x, y or z occurs in the expression.
+    [[nodiscard]] bool is_constant_valued() const;
+
+    /// Identity of the shared node (equal ids ⇔ structurally equal expressions).
+    [[nodiscard]] const void* id() const { return node_.get(); }
+    friend bool operator==(const Expr& a, const Expr& b) { return a.node_ == b.node_; }
+
+    /// Number of distinct nodes in the DAG.
+    [[nodiscard]] std::size_t node_count() const;
+    /// Infix rendering, for messages and debugging.
+    [[nodiscard]] std::string to_string() const;
+
+    /// The node for `op` over the given operands (constant-folded and hash-consed).
+    static Expr make(Op op, const Expr& a, const Expr& b, int n = 0);
+    static Expr make(Op op, const Expr& a) { return make(op, a, Expr(), 0); }
+
+private:
+    explicit Expr(std::shared_ptr<const ExprNode> node) : node_(std::move(node)) {}
+    static Expr intern(Op op, double value, int n, const Expr* a, const Expr* b);
+    friend Expr var_x();
+    friend Expr var_y();
+    friend Expr var_z();
+
+    std::shared_ptr<const ExprNode> node_;
+};
+
+struct ExprNode {
+    Op op;
+    int exponent;  // Powi only
+    double value;  // Const only
+    bool constant_valued;
+    std::shared_ptr<const ExprNode> a, b;  // operands (null past the arity)
+};
+
+/// The coordinate variables.
+Expr var_x();
+Expr var_y();
+Expr var_z();
+
+Expr operator+(const Expr& a, const Expr& b);
+Expr operator-(const Expr& a, const Expr& b);
+Expr operator*(const Expr& a, const Expr& b);
+Expr operator/(const Expr& a, const Expr& b);
+Expr operator-(const Expr& a);
+Expr square(const Expr& a);
+Expr sqrt(const Expr& a);
+Expr abs(const Expr& a);
+Expr exp(const Expr& a);
+Expr log(const Expr& a);
+Expr sin(const Expr& a);
+Expr cos(const Expr& a);
+/// a^n for an integer n (square for n = 2).
+Expr powi(const Expr& a, int n);
+/// a^b; an integral constant b becomes powi.
+Expr pow(const Expr& a, const Expr& b);
+Expr min(const Expr& a, const Expr& b);
+Expr max(const Expr& a, const Expr& b);
+
+}  // namespace zeroset

@@ -1,0 +1,96 @@
+// The .vm reader. Opcodes are looked up in the op table by their .vm names,
+// plus `recip` and `copy`, which map onto existing ops.
+#include "zeroset/expr/vm_import.hpp"
+
+#include <charconv>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace zeroset {
+
+namespace {
+
+struct Token {
+    std::string_view text;
+    int column;  // 1-based
+};
+
+std::vector<Token> split(std::string_view line) {
+    std::vector<Token> tokens;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        if (i >= line.size() || line[i] == '#') break;
+        const std::size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+        tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+    }
+    return tokens;
+}
+
+}  // namespace
+
+Expr import_vm(std::istream& in) {
+    std::unordered_map<std::string, Expr> values;
+    std::string line;
+    int line_number = 0;
+    bool have_output = false;
+    Expr output;
+    while (std::getline(in, line)) {
+        ++line_number;
+        const std::vector<Token> tokens = split(line);
+        if (tokens.empty()) continue;
+        const auto fail = [&](const Token& at, const std::string& message) -> VmImportError {
+            return {line_number, at.column, message};
+        };
+        if (tokens.size() < 2) throw fail(tokens[0], "expected `name opcode args…`");
+        const std::string name(tokens[0].text);
+        const std::string_view opcode = tokens[1].text;
+
+        const auto operand = [&](std::size_t k) -> Expr {
+            if (k >= tokens.size()) throw fail(tokens[1], "`" + std::string(opcode) + "` is missing an operand");
+            const auto it = values.find(std::string(tokens[k].text));
+            if (it == values.end()) throw fail(tokens[k], "unknown value `" + std::string(tokens[k].text) + "`");
+            return it->second;
+        };
+        const auto expect_count = [&](std::size_t count) {
+            if (tokens.size() != count + 2)
+                throw fail(tokens[1], "`" + std::string(opcode) + "` takes " + std::to_string(count) + " operand(s), got " +
+                                          std::to_string(tokens.size() - 2));
+        };
+
+        Expr value;
+        if (opcode == "const") {
+            expect_count(1);
+            double c = 0.0;
+            const std::string_view text = tokens[2].text;
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), c);
+            if (error != std::errc() || end != text.data() + text.size())
+                throw fail(tokens[2], "invalid number `" + std::string(text) + "`");
+            value = Expr(c);
+        } else if (opcode == "var-x" || opcode == "var-y" || opcode == "var-z") {
+            expect_count(0);
+            value = opcode == "var-x" ? var_x() : opcode == "var-y" ? var_y() : var_z();
+        } else if (opcode == "recip") {
+            expect_count(1);
+            value = Expr(1.0) / operand(2);
+        } else if (opcode == "copy") {
+            expect_count(1);
+            value = operand(2);
+        } else if (const auto op = op_from_name(opcode); op && op != Op::Powi && op != Op::Const) {
+            const int arity = op_arity(*op);
+            expect_count(static_cast<std::size_t>(arity));
+            value = arity == 1 ? Expr::make(*op, operand(2)) : Expr::make(*op, operand(2), operand(3));
+        } else {
+            throw fail(tokens[1], "unknown opcode `" + std::string(opcode) + "`");
+        }
+        values[name] = value;
+        output = value;
+        have_output = true;
+    }
+    if (!have_output) throw VmImportError(line_number, 1, "the model has no clauses");
+    return output;
+}
+
+}  // namespace zeroset

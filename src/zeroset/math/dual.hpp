@@ -1,0 +1,92 @@
+// Dual<T>: a value and its gradient ∇f = (∂f/∂x, ∂f/∂y, ∂f/∂z), carried
+// through every operation by the chain rule (forward-mode differentiation).
+// Dual<double> gives exact normals (survey eq. 33); Dual<Interval> encloses
+// the gradient over a box, which bounds the Lipschitz constant (eq. 30).
+#pragma once
+
+#include "zeroset/math/interval.hpp"
+#include "zeroset/math/scalar.hpp"
+#include "zeroset/math/vec3.hpp"
+
+namespace zeroset {
+
+template <class T>
+struct Dual {
+    T v{};
+    Vec3<T> g{};  // gradient
+
+    constexpr Dual() = default;
+    /// A constant: zero gradient.
+    constexpr explicit Dual(double c) : v(c), g(T(0.0), T(0.0), T(0.0)) {}
+    constexpr Dual(T v_, Vec3<T> g_) : v(v_), g(g_) {}
+
+    /// The coordinate variable number `axis` (0 = x, 1 = y, 2 = z) with value v.
+    static Dual variable(T value, int axis) {
+        Dual d{value, {T(0.0), T(0.0), T(0.0)}};
+        d.g[axis] = T(1.0);
+        return d;
+    }
+};
+
+namespace detail {
+/// The chain rule for a unary function with derivative `dg` at the argument.
+template <class T>
+Dual<T> chain(const Dual<T>& u, T value, T dg) {
+    return {value, u.g * dg};
+}
+}  // namespace detail
+
+template <class T> Dual<T> operator+(const Dual<T>& a, const Dual<T>& b) { return {a.v + b.v, a.g + b.g}; }
+template <class T> Dual<T> operator-(const Dual<T>& a, const Dual<T>& b) { return {a.v - b.v, a.g - b.g}; }
+template <class T> Dual<T> operator-(const Dual<T>& a) { return {-a.v, -a.g}; }
+template <class T> Dual<T> operator*(const Dual<T>& a, const Dual<T>& b) { return {a.v * b.v, a.g * b.v + b.g * a.v}; }
+template <class T> Dual<T> operator/(const Dual<T>& a, const Dual<T>& b) {
+    const T q = a.v / b.v;
+    return {q, (a.g - b.g * q) / b.v};
+}
+
+template <class T> Dual<T> square(const Dual<T>& a) { return detail::chain(a, square(a.v), T(2.0) * a.v); }
+template <class T> Dual<T> sqrt(const Dual<T>& a) {
+    const T s = sqrt(a.v);
+    return detail::chain(a, s, T(0.5) / s);
+}
+template <class T> Dual<T> exp(const Dual<T>& a) {
+    const T e = exp(a.v);
+    return detail::chain(a, e, e);
+}
+template <class T> Dual<T> log(const Dual<T>& a) { return detail::chain(a, log(a.v), T(1.0) / a.v); }
+template <class T> Dual<T> sin(const Dual<T>& a) { return detail::chain(a, sin(a.v), cos(a.v)); }
+template <class T> Dual<T> cos(const Dual<T>& a) { return detail::chain(a, cos(a.v), -sin(a.v)); }
+template <class T> Dual<T> powi(const Dual<T>& a, int n) {
+    if (n == 0) return Dual<T>(1.0);
+    return detail::chain(a, powi(a.v, n), T(static_cast<double>(n)) * powi(a.v, n - 1));
+}
+template <class T> Dual<T> pow(const Dual<T>& a, const Dual<T>& b) {
+    const bool constant_exponent = is_exact_zero(b.g.x) && is_exact_zero(b.g.y) && is_exact_zero(b.g.z);
+    if (constant_exponent) {
+        return detail::chain(a, pow(a.v, b.v), b.v * pow(a.v, b.v - T(1.0)));
+    }
+    return exp(b * log(a));  // a^b = e^(b ln a), for a > 0
+}
+
+/// |a|: the sign picks the branch; where the sign is unknown (an interval
+/// around 0) the gradient is the hull of both branches.
+template <class T> Dual<T> abs(const Dual<T>& a) {
+    if (certainly_le(T(0.0), a.v)) return a;
+    if (certainly_le(a.v, T(0.0))) return -a;
+    return {abs(a.v), {hull(a.g.x, -a.g.x), hull(a.g.y, -a.g.y), hull(a.g.z, -a.g.z)}};
+}
+/// min/max take the gradient of the side that wins; where either side can win
+/// over an interval, the hull of both (a sound enclosure of the subgradient).
+template <class T> Dual<T> min(const Dual<T>& a, const Dual<T>& b) {
+    if (certainly_le(a.v, b.v)) return a;
+    if (certainly_le(b.v, a.v)) return b;
+    return {min(a.v, b.v), {hull(a.g.x, b.g.x), hull(a.g.y, b.g.y), hull(a.g.z, b.g.z)}};
+}
+template <class T> Dual<T> max(const Dual<T>& a, const Dual<T>& b) {
+    if (certainly_le(b.v, a.v)) return a;
+    if (certainly_le(a.v, b.v)) return b;
+    return {max(a.v, b.v), {hull(a.g.x, b.g.x), hull(a.g.y, b.g.y), hull(a.g.z, b.g.z)}};
+}
+
+}  // namespace zeroset

@@ -1,0 +1,219 @@
+// Interval: a closed range [lo, hi] that always contains the true result of
+// the operation (the survey's §4, eqs. 25–29). Every bound is rounded outward:
+// results are computed in round-to-nearest and then moved one or more ulps
+// away (correctly rounded ops are off by at most half an ulp; glibc's exp, log,
+// sin, cos and pow by less than two, so those move by two).
+//
+// Domains are clipped: sqrt/log/pow with a partly negative argument enclose
+// the function over the part where it is defined. An interval entirely outside
+// the domain yields the empty interval (NaN bounds), which contains nothing and
+// propagates through later operations.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "zeroset/math/scalar.hpp"
+
+namespace zeroset {
+
+namespace rounding {
+inline double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+inline double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+inline double down2(double x) { return down(down(x)); }
+inline double up2(double x) { return up(up(x)); }
+}  // namespace rounding
+
+struct Interval {
+    double lo = 0.0;
+    double hi = 0.0;
+
+    constexpr Interval() = default;
+    /// A point interval. The double is taken as exact.
+    constexpr explicit Interval(double v) : lo(v), hi(v) {}
+    constexpr Interval(double lo_, double hi_) : lo(lo_), hi(hi_) {}
+
+    static constexpr Interval entire() {
+        return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    }
+    static constexpr Interval empty() {
+        return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    }
+
+    [[nodiscard]] constexpr bool is_empty() const { return !(lo <= hi); }
+    [[nodiscard]] constexpr bool contains(double v) const { return lo <= v && v <= hi; }
+    [[nodiscard]] constexpr bool contains(const Interval& o) const { return lo <= o.lo && o.hi <= hi; }
+    [[nodiscard]] constexpr double width() const { return hi - lo; }
+    [[nodiscard]] constexpr double mid() const { return 0.5 * lo + 0.5 * hi; }
+    /// The largest absolute value in the interval.
+    [[nodiscard]] constexpr double magnitude() const { return std::max(-lo, hi); }
+};
+
+inline Interval operator+(Interval a, Interval b) { return {rounding::down(a.lo + b.lo), rounding::up(a.hi + b.hi)}; }
+inline Interval operator-(Interval a, Interval b) { return {rounding::down(a.lo - b.hi), rounding::up(a.hi - b.lo)}; }
+inline Interval operator-(Interval a) { return {-a.hi, -a.lo}; }
+
+namespace detail {
+/// Product with 0 × ∞ = 0, the interval-arithmetic convention.
+inline double product(double a, double b) { return (a == 0.0 || b == 0.0) ? 0.0 : a * b; }
+}  // namespace detail
+
+inline Interval operator*(Interval a, Interval b) {
+    if (a.is_empty() || b.is_empty()) return Interval::empty();
+    const double p0 = detail::product(a.lo, b.lo), p1 = detail::product(a.lo, b.hi);
+    const double p2 = detail::product(a.hi, b.lo), p3 = detail::product(a.hi, b.hi);
+    return {rounding::down(std::min({p0, p1, p2, p3})), rounding::up(std::max({p0, p1, p2, p3}))};
+}
+
+/// Division; a divisor that contains 0 gives the sound (extended) answer.
+inline Interval operator/(Interval a, Interval b) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    if (a.is_empty() || b.is_empty()) return Interval::empty();
+    if (b.lo > 0.0 || b.hi < 0.0) {
+        const double q0 = a.lo / b.lo, q1 = a.lo / b.hi, q2 = a.hi / b.lo, q3 = a.hi / b.hi;
+        const double lo = std::min({q0, q1, q2, q3}), hi = std::max({q0, q1, q2, q3});
+        if (lo != lo || hi != hi) return Interval::entire();  // ∞/∞
+        return {rounding::down(lo), rounding::up(hi)};
+    }
+    if (b.lo == 0.0 && b.hi == 0.0) return Interval::empty();
+    // The divisor touches or straddles 0: the quotient reaches ±∞ on the side(s)
+    // where the divisor approaches 0.
+    if (b.lo == 0.0 && a.lo >= 0.0) return {a.lo == 0.0 ? 0.0 : rounding::down(a.lo / b.hi), inf};
+    if (b.lo == 0.0 && a.hi <= 0.0) return {-inf, a.hi == 0.0 ? 0.0 : rounding::up(a.hi / b.hi)};
+    if (b.hi == 0.0 && a.lo >= 0.0) return {-inf, a.lo == 0.0 ? 0.0 : rounding::up(a.lo / b.lo)};
+    if (b.hi == 0.0 && a.hi <= 0.0) return {a.hi == 0.0 ? 0.0 : rounding::down(a.hi / b.lo), inf};
+    return Interval::entire();
+}
+
+inline Interval& operator+=(Interval& a, Interval b) { return a = a + b; }
+inline Interval& operator-=(Interval& a, Interval b) { return a = a - b; }
+inline Interval& operator*=(Interval& a, Interval b) { return a = a * b; }
+
+inline Interval operator+(Interval a, double b) { return a + Interval(b); }
+inline Interval operator+(double a, Interval b) { return Interval(a) + b; }
+inline Interval operator-(Interval a, double b) { return a - Interval(b); }
+inline Interval operator-(double a, Interval b) { return Interval(a) - b; }
+inline Interval operator*(Interval a, double b) { return a * Interval(b); }
+inline Interval operator*(double a, Interval b) { return Interval(a) * b; }
+inline Interval operator/(Interval a, double b) { return a / Interval(b); }
+inline Interval operator/(double a, Interval b) { return Interval(a) / b; }
+
+/// Tight square: starts at 0 when the argument contains 0.
+inline Interval square(Interval a) {
+    if (a.is_empty()) return a;
+    if (a.lo >= 0.0) return {rounding::down(a.lo * a.lo), rounding::up(a.hi * a.hi)};
+    if (a.hi <= 0.0) return {rounding::down(a.hi * a.hi), rounding::up(a.lo * a.lo)};
+    const double m = std::max(-a.lo, a.hi);
+    return {0.0, rounding::up(m * m)};
+}
+
+inline Interval abs(Interval a) {
+    if (a.lo >= 0.0 || a.is_empty()) return a;
+    if (a.hi <= 0.0) return -a;
+    return {0.0, std::max(-a.lo, a.hi)};
+}
+
+inline Interval sqrt(Interval a) {
+    if (a.is_empty() || a.hi < 0.0) return Interval::empty();
+    const double lo = a.lo <= 0.0 ? 0.0 : std::max(0.0, rounding::down(std::sqrt(a.lo)));
+    return {lo, rounding::up(std::sqrt(a.hi))};
+}
+
+inline Interval exp(Interval a) {
+    if (a.is_empty()) return a;
+    return {std::max(0.0, rounding::down2(std::exp(a.lo))), rounding::up2(std::exp(a.hi))};
+}
+
+inline Interval log(Interval a) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    if (a.is_empty() || a.hi < 0.0) return Interval::empty();
+    const double lo = a.lo <= 0.0 ? -inf : rounding::down2(std::log(a.lo));
+    const double hi = a.hi == 0.0 ? -inf : rounding::up2(std::log(a.hi));
+    return {lo, hi};
+}
+
+namespace detail {
+/// Range of a 2π-periodic function g over [lo, hi], where g peaks (value 1)
+/// at `peak` + 2kπ and bottoms out (value −1) at `peak` + π + 2kπ.
+template <class G>
+Interval periodic_range(Interval a, G g, double peak) {
+    constexpr double two_pi = 2.0 * std::numbers::pi;
+    if (a.is_empty()) return a;
+    // Beyond ~2^40 the period is not resolved well in double: answer the whole range.
+    if (!(a.width() < two_pi) || std::abs(a.lo) > 1e12 || std::abs(a.hi) > 1e12) return {-1.0, 1.0};
+    double lo = std::min(g(a.lo), g(a.hi));
+    double hi = std::max(g(a.lo), g(a.hi));
+    // Is there a peak / trough inside? Checked with a small margin, so a peak
+    // that is missed only by rounding still counts (the bound stays sound).
+    const double margin = 1e-12 * (1.0 + std::abs(a.lo) + std::abs(a.hi));
+    const double k_peak = std::ceil((a.lo - margin - peak) / two_pi);
+    if (peak + k_peak * two_pi <= a.hi + margin) hi = 1.0;
+    const double trough = peak + std::numbers::pi;
+    const double k_trough = std::ceil((a.lo - margin - trough) / two_pi);
+    if (trough + k_trough * two_pi <= a.hi + margin) lo = -1.0;
+    return {std::max(-1.0, rounding::down2(lo)), std::min(1.0, rounding::up2(hi))};
+}
+}  // namespace detail
+
+inline Interval sin(Interval a) {
+    return detail::periodic_range(a, [](double v) { return std::sin(v); }, std::numbers::pi / 2);
+}
+inline Interval cos(Interval a) {
+    return detail::periodic_range(a, [](double v) { return std::cos(v); }, 0.0);
+}
+
+/// a^n for an integer n.
+inline Interval powi(Interval a, int n) {
+    if (a.is_empty()) return a;
+    if (n == 0) return Interval(1.0);
+    if (n == 1) return a;
+    if (n == 2) return square(a);
+    if (n < 0) return Interval(1.0) / powi(a, -n);
+    const auto p = [n](double v) { return std::pow(v, static_cast<double>(n)); };
+    if (n % 2 == 1) return {rounding::down2(p(a.lo)), rounding::up2(p(a.hi))};
+    const Interval m = abs(a);
+    return {std::max(0.0, rounding::down2(p(m.lo))), rounding::up2(p(m.hi))};
+}
+
+/// a^b. An exponent that is a single integer behaves as powi (negative bases
+/// allowed); otherwise the base is clipped to a ≥ 0, like std::pow's domain.
+inline Interval pow(Interval a, Interval b) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    if (a.is_empty() || b.is_empty()) return Interval::empty();
+    if (b.lo == b.hi && b.lo == std::round(b.lo) && std::abs(b.lo) < 1 << 30)
+        return powi(a, static_cast<int>(b.lo));
+    if (a.hi < 0.0) return Interval::empty();
+    const Interval base{std::max(a.lo, 0.0), a.hi};
+    if (b.lo == b.hi) {  // a constant real exponent: monotone in the base
+        const double p = b.lo;
+        const double at_lo = std::pow(base.lo, p), at_hi = std::pow(base.hi, p);
+        if (p > 0.0) return {std::max(0.0, rounding::down2(at_lo)), rounding::up2(at_hi)};
+        return {std::max(0.0, rounding::down2(at_hi)), base.lo == 0.0 ? inf : rounding::up2(at_lo)};
+    }
+    // General case: a^b = exp(b · log a) over the base's positive part; at 0 the
+    // value is 0 (b > 0), 1 (b = 0) or ∞ (b < 0).
+    Interval r = exp(b * log(base));
+    if (base.lo == 0.0) r = {0.0, b.lo < 0.0 ? inf : std::max(r.hi, 1.0)};
+    return r;
+}
+
+inline Interval min(Interval a, Interval b) {
+    if (a.is_empty() || b.is_empty()) return Interval::empty();
+    return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)};
+}
+inline Interval max(Interval a, Interval b) {
+    if (a.is_empty() || b.is_empty()) return Interval::empty();
+    return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)};
+}
+
+inline bool certainly_le(Interval a, Interval b) { return a.hi <= b.lo; }
+inline Interval hull(Interval a, Interval b) {
+    if (a.is_empty()) return b;
+    if (b.is_empty()) return a;
+    return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+}
+inline bool is_exact_zero(Interval a) { return a.lo == 0.0 && a.hi == 0.0; }
+
+}  // namespace zeroset

@@ -1,0 +1,109 @@
+// Jet<T>: the value and the first two derivatives of a function of one
+// variable t, propagated by the chain rule. Evaluating f along a ray with
+// x = x_o + t·x_d gives H(t), H′(t) and H″(t) (survey eqs. 13–21); with
+// T = Interval and t an interval, it encloses them over a whole ray segment —
+// what the interval method (Fig. 9) needs of H′ and the LG method (Fig. 11) of H″.
+#pragma once
+
+#include "zeroset/math/interval.hpp"
+#include "zeroset/math/scalar.hpp"
+
+namespace zeroset {
+
+template <class T>
+struct Jet {
+    T v{};   // H
+    T d1{};  // H′
+    T d2{};  // H″
+
+    constexpr Jet() = default;
+    /// A constant.
+    constexpr explicit Jet(double c) : v(c), d1(0.0), d2(0.0) {}
+    constexpr Jet(T v_, T d1_, T d2_) : v(v_), d1(d1_), d2(d2_) {}
+
+    /// The affine function origin + t·direction, evaluated at t.
+    static Jet line(double origin, double direction, T t) {
+        return {T(origin) + T(direction) * t, T(direction), T(0.0)};
+    }
+};
+
+namespace detail {
+/// Chain rule for g(u): value g, first derivative g1 = g′(u), second g2 = g″(u).
+template <class T>
+Jet<T> chain(const Jet<T>& u, T g, T g1, T g2) {
+    return {g, g1 * u.d1, g2 * square(u.d1) + g1 * u.d2};
+}
+}  // namespace detail
+
+template <class T> Jet<T> operator+(const Jet<T>& a, const Jet<T>& b) { return {a.v + b.v, a.d1 + b.d1, a.d2 + b.d2}; }
+template <class T> Jet<T> operator-(const Jet<T>& a, const Jet<T>& b) { return {a.v - b.v, a.d1 - b.d1, a.d2 - b.d2}; }
+template <class T> Jet<T> operator-(const Jet<T>& a) { return {-a.v, -a.d1, -a.d2}; }
+template <class T> Jet<T> operator*(const Jet<T>& a, const Jet<T>& b) {
+    return {a.v * b.v, a.d1 * b.v + a.v * b.d1, a.d2 * b.v + T(2.0) * a.d1 * b.d1 + a.v * b.d2};
+}
+template <class T> Jet<T> operator/(const Jet<T>& a, const Jet<T>& b) {
+    const T q = a.v / b.v;
+    const T q1 = (a.d1 - q * b.d1) / b.v;
+    const T q2 = (a.d2 - T(2.0) * q1 * b.d1 - q * b.d2) / b.v;
+    return {q, q1, q2};
+}
+
+template <class T> Jet<T> square(const Jet<T>& a) {
+    return {square(a.v), T(2.0) * a.v * a.d1, T(2.0) * square(a.d1) + T(2.0) * a.v * a.d2};
+}
+template <class T> Jet<T> sqrt(const Jet<T>& a) {
+    const T s = sqrt(a.v);
+    const T g1 = T(0.5) / s;
+    return detail::chain(a, s, g1, -g1 / (T(2.0) * a.v));
+}
+template <class T> Jet<T> exp(const Jet<T>& a) {
+    const T e = exp(a.v);
+    return detail::chain(a, e, e, e);
+}
+template <class T> Jet<T> log(const Jet<T>& a) {
+    const T r = T(1.0) / a.v;
+    return detail::chain(a, log(a.v), r, -square(r));
+}
+template <class T> Jet<T> sin(const Jet<T>& a) {
+    const T s = sin(a.v);
+    return detail::chain(a, s, cos(a.v), -s);
+}
+template <class T> Jet<T> cos(const Jet<T>& a) {
+    const T c = cos(a.v);
+    return detail::chain(a, c, -sin(a.v), -c);
+}
+template <class T> Jet<T> powi(const Jet<T>& a, int n) {
+    if (n == 0) return Jet<T>(1.0);
+    const double nd = static_cast<double>(n);
+    return detail::chain(a, powi(a.v, n), T(nd) * powi(a.v, n - 1), T(nd * (nd - 1.0)) * powi(a.v, n - 2));
+}
+template <class T> Jet<T> pow(const Jet<T>& a, const Jet<T>& b) {
+    if (is_exact_zero(b.d1) && is_exact_zero(b.d2)) {
+        const T p = b.v;
+        return detail::chain(a, pow(a.v, p), p * pow(a.v, p - T(1.0)),
+                             p * (p - T(1.0)) * pow(a.v, p - T(2.0)));
+    }
+    return exp(b * log(a));  // a^b = e^(b ln a), for a > 0
+}
+
+/// |a|, min, max: the winning branch; where it is ambiguous over an interval,
+/// the hull of both branches' derivatives. (At the kink itself H′ jumps, so
+/// H″ has no finite bound there; the survey's §7 notes that methods needing
+/// smooth derivatives must treat such CSG with care.)
+template <class T> Jet<T> abs(const Jet<T>& a) {
+    if (certainly_le(T(0.0), a.v)) return a;
+    if (certainly_le(a.v, T(0.0))) return -a;
+    return {abs(a.v), hull(a.d1, -a.d1), hull(a.d2, -a.d2)};
+}
+template <class T> Jet<T> min(const Jet<T>& a, const Jet<T>& b) {
+    if (certainly_le(a.v, b.v)) return a;
+    if (certainly_le(b.v, a.v)) return b;
+    return {min(a.v, b.v), hull(a.d1, b.d1), hull(a.d2, b.d2)};
+}
+template <class T> Jet<T> max(const Jet<T>& a, const Jet<T>& b) {
+    if (certainly_le(b.v, a.v)) return a;
+    if (certainly_le(a.v, b.v)) return b;
+    return {max(a.v, b.v), hull(a.d1, b.d1), hull(a.d2, b.d2)};
+}
+
+}  // namespace zeroset

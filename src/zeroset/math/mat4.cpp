@@ -1,0 +1,99 @@
+// Mat4 arithmetic; the inverse uses Gauss–Jordan elimination with partial pivoting.
+#include "zeroset/math/mat4.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace zeroset {
+
+Mat4 Mat4::identity() {
+    Mat4 r;
+    for (int i = 0; i < 4; ++i) r.m[i][i] = 1.0;
+    return r;
+}
+
+Mat4 Mat4::translate(const Vec3d& t) {
+    Mat4 r = identity();
+    r.m[0][3] = t.x;
+    r.m[1][3] = t.y;
+    r.m[2][3] = t.z;
+    return r;
+}
+
+Mat4 Mat4::scale(const Vec3d& s) {
+    Mat4 r = identity();
+    r.m[0][0] = s.x;
+    r.m[1][1] = s.y;
+    r.m[2][2] = s.z;
+    return r;
+}
+
+Mat4 Mat4::rotate(const Vec3d& axis, double radians) {
+    const Vec3d a = normalize(axis);
+    const double c = std::cos(radians), s = std::sin(radians), k = 1.0 - c;
+    Mat4 r = identity();
+    r.m[0] = {c + a.x * a.x * k, a.x * a.y * k - a.z * s, a.x * a.z * k + a.y * s, 0.0};
+    r.m[1] = {a.y * a.x * k + a.z * s, c + a.y * a.y * k, a.y * a.z * k - a.x * s, 0.0};
+    r.m[2] = {a.z * a.x * k - a.y * s, a.z * a.y * k + a.x * s, c + a.z * a.z * k, 0.0};
+    return r;
+}
+
+Mat4 Mat4::operator*(const Mat4& o) const {
+    Mat4 r;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; ++k) sum += m[i][k] * o.m[k][j];
+            r.m[i][j] = sum;
+        }
+    return r;
+}
+
+Mat4 Mat4::transpose() const {
+    Mat4 r;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r.m[i][j] = m[j][i];
+    return r;
+}
+
+std::optional<Mat4> Mat4::inverse() const {
+    Mat4 a = *this;
+    Mat4 inv = identity();
+    for (int col = 0; col < 4; ++col) {
+        int pivot = col;
+        for (int row = col + 1; row < 4; ++row)
+            if (std::abs(a.m[row][col]) > std::abs(a.m[pivot][col])) pivot = row;
+        if (std::abs(a.m[pivot][col]) < 1e-300) return std::nullopt;
+        std::swap(a.m[col], a.m[pivot]);
+        std::swap(inv.m[col], inv.m[pivot]);
+        const double scale = 1.0 / a.m[col][col];
+        for (int j = 0; j < 4; ++j) {
+            a.m[col][j] *= scale;
+            inv.m[col][j] *= scale;
+        }
+        for (int row = 0; row < 4; ++row) {
+            if (row == col) continue;
+            const double factor = a.m[row][col];
+            if (factor == 0.0) continue;
+            for (int j = 0; j < 4; ++j) {
+                a.m[row][j] -= factor * a.m[col][j];
+                inv.m[row][j] -= factor * inv.m[col][j];
+            }
+        }
+    }
+    return inv;
+}
+
+Vec3d Mat4::transform_point(const Vec3d& p) const {
+    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+}
+
+Vec3d Mat4::transform_vector(const Vec3d& v) const {
+    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
+            m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+}
+
+}  // namespace zeroset

@@ -1,0 +1,32 @@
+// Mat4: homogeneous 4×4 transforms. Affine deformations act on rays through
+// their inverse (survey §9, eq. 36), so the inverse is a first-class operation.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "zeroset/math/vec3.hpp"
+
+namespace zeroset {
+
+struct Mat4 {
+    std::array<std::array<double, 4>, 4> m{};  // m[row][column]
+
+    static Mat4 identity();
+    static Mat4 translate(const Vec3d& t);
+    static Mat4 scale(const Vec3d& s);
+    /// Rotation by `radians` about the (normalised) `axis`, right-handed.
+    static Mat4 rotate(const Vec3d& axis, double radians);
+
+    [[nodiscard]] Mat4 operator*(const Mat4& o) const;
+    [[nodiscard]] Mat4 transpose() const;
+    /// The inverse, or nothing when the matrix is singular.
+    [[nodiscard]] std::optional<Mat4> inverse() const;
+
+    /// Applies the matrix to (p, 1).
+    [[nodiscard]] Vec3d transform_point(const Vec3d& p) const;
+    /// Applies the matrix to (v, 0).
+    [[nodiscard]] Vec3d transform_vector(const Vec3d& v) const;
+};
+
+}  // namespace zeroset

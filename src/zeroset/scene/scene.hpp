@@ -1,0 +1,69 @@
+// Scene: what to render — camera, lights, background, image settings and the
+// implicit objects. Built by the scene-language parser (scene/parser.hpp) or
+// directly in C++; consumed by the renderer.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "zeroset/expr/expr.hpp"
+#include "zeroset/math/vec3.hpp"
+#include "zeroset/trace/bounds.hpp"
+#include "zeroset/trace/method.hpp"
+
+namespace zeroset {
+
+/// Pinhole camera looking from `from` towards `at`; `fov_degrees` is the
+/// vertical field of view.
+struct Camera {
+    Vec3d from{0.0, 0.0, -5.0};
+    Vec3d at{0.0, 0.0, 0.0};
+    Vec3d up{0.0, 1.0, 0.0};
+    double fov_degrees = 40.0;
+};
+
+struct Light {
+    enum class Kind { Point, Directional };
+    Kind kind = Kind::Point;
+    Vec3d position{0.0, 0.0, 0.0};   // Kind::Point
+    Vec3d direction{0.0, -1.0, 0.0}; // Kind::Directional: the way the light travels
+    Vec3d color{1.0, 1.0, 1.0};      // linear RGB radiance scale
+    bool casts_shadows = true;
+};
+
+/// Blinn–Phong material.
+struct Material {
+    Vec3d color{0.8, 0.8, 0.8};  // diffuse albedo, linear RGB
+    double ambient = 0.1;        // fraction of the scene's ambient light reflected
+    double diffuse = 0.9;
+    double specular = 0.3;
+    double shininess = 40.0;     // Blinn–Phong exponent
+};
+
+struct Object {
+    std::string name;
+    Expr surface;  // f(x, y, z): negative inside, zero on the surface
+    Bounds bounds = Bounds::make_box({{-10, -10, -10}, {10, 10, 10}});
+    Method method = Method::Auto;
+    NormalMode normals = NormalMode::Analytic;
+    Material material;
+};
+
+/// Image settings a scene may carry; the command line overrides them.
+struct ImageSettings {
+    int width = 640;
+    int height = 480;
+    int samples_per_pixel = 1;
+};
+
+struct Scene {
+    Camera camera;
+    std::vector<Light> lights;
+    Vec3d background{0.05, 0.05, 0.08};  // linear RGB
+    Vec3d ambient{1.0, 1.0, 1.0};        // ambient light colour (scaled by Material::ambient)
+    ImageSettings image;
+    std::vector<Object> objects;
+};
+
+}  // namespace zeroset

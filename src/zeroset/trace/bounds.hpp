@@ -1,0 +1,50 @@
+// Bounds: the region an object's surface is known to lie in — a box or a
+// sphere (survey §6.1). Rays are clipped to it before root finding, and the
+// Lipschitz bound is computed over its enclosing box.
+#pragma once
+
+#include <cmath>
+#include <optional>
+
+#include "zeroset/math/box3.hpp"
+
+namespace zeroset {
+
+struct Bounds {
+    enum class Kind { Box, Sphere };
+    Kind kind = Kind::Box;
+    Box3 box{{-1, -1, -1}, {1, 1, 1}};  // Kind::Box
+    Vec3d center{};                     // Kind::Sphere
+    double radius = 1.0;                // Kind::Sphere
+
+    static Bounds make_box(const Box3& b) { return {Kind::Box, b, {}, 0.0}; }
+    static Bounds make_sphere(const Vec3d& c, double r) { return {Kind::Sphere, {}, c, r}; }
+
+    /// The smallest axis-aligned box containing the bounds.
+    [[nodiscard]] Box3 enclosing_box() const {
+        if (kind == Kind::Box) return box;
+        const Vec3d r{radius, radius, radius};
+        return {center - r, center + r};
+    }
+
+    /// The part of [t_min, t_max] where the ray is inside the bounds, if any.
+    [[nodiscard]] std::optional<Span> clip(const Ray& ray, double t_min, double t_max) const {
+        if (kind == Kind::Box) return box.clip(ray, t_min, t_max);
+        // |o + t·d − c|² = r²  →  a t² + 2 b t + c = 0
+        const Vec3d oc = ray.origin - center;
+        const double a = dot(ray.dir, ray.dir), b = dot(oc, ray.dir), c = dot(oc, oc) - radius * radius;
+        const double disc = b * b - a * c;
+        if (disc < 0.0 || a == 0.0) return std::nullopt;
+        const double s = std::sqrt(disc);
+        // Numerically stable pair of roots.
+        const double q = b >= 0.0 ? -(b + s) : -(b - s);
+        double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
+        if (t0 > t1) std::swap(t0, t1);
+        t0 = std::max(t0, t_min);
+        t1 = std::min(t1, t_max);
+        if (t0 > t1) return std::nullopt;
+        return Span{t0, t1};
+    }
+};
+
+}  // namespace zeroset
