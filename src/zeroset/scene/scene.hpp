@@ -41,10 +41,18 @@ struct Material {
     double shininess = 40.0;     // Blinn–Phong exponent
 };
 
+/// Bounds of an object that gives none: the box from (−10, −10, −10) to (10, 10, 10).
+inline Bounds default_object_bounds() {
+    Bounds b;
+    b.box.lo = {-10.0, -10.0, -10.0};
+    b.box.hi = {10.0, 10.0, 10.0};
+    return b;
+}
+
 struct Object {
     std::string name;
     Expr surface;  // f(x, y, z): negative inside, zero on the surface
-    Bounds bounds = Bounds::make_box({{-10, -10, -10}, {10, 10, 10}});
+    Bounds bounds = default_object_bounds();
     Method method = Method::Auto;
     NormalMode normals = NormalMode::Analytic;
     Material material;

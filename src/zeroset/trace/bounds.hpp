@@ -17,8 +17,18 @@ struct Bounds {
     Vec3d center{};                     // Kind::Sphere
     double radius = 1.0;                // Kind::Sphere
 
-    static Bounds make_box(const Box3& b) { return {Kind::Box, b, {}, 0.0}; }
-    static Bounds make_sphere(const Vec3d& c, double r) { return {Kind::Sphere, {}, c, r}; }
+    static Bounds make_box(const Box3& b) {
+        Bounds bounds;
+        bounds.box = b;
+        return bounds;
+    }
+    static Bounds make_sphere(const Vec3d& c, double r) {
+        Bounds bounds;
+        bounds.kind = Kind::Sphere;
+        bounds.center = c;
+        bounds.radius = r;
+        return bounds;
+    }
 
     /// The smallest axis-aligned box containing the bounds.
     [[nodiscard]] Box3 enclosing_box() const {

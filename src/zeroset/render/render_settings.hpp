@@ -1,0 +1,29 @@
+// What to render and how: image size, samples, threads, progress reporting.
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace zeroset {
+
+struct RenderSettings {
+    int width = 640;
+    int height = 480;
+    int samples_per_pixel = 1;
+    int threads = 0;  // 0: all hardware threads
+    /// Called after every finished tile with (tiles done, tiles in all), from
+    /// one thread at a time.
+    std::function<void(int, int)> on_progress;
+};
+
+/// A render that cannot be done (bad settings, a scene that evaluates to NaN…).
+class RenderError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Checks sizes and counts; throws RenderError with a message naming the option.
+void validate(const RenderSettings& settings);
+
+}  // namespace zeroset

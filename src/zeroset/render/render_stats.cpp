@@ -1,0 +1,30 @@
+// Formatting of the render summary.
+#include "zeroset/render/render_stats.hpp"
+
+#include <cstdio>
+
+namespace zeroset {
+
+namespace {
+std::string count(std::uint64_t n) {
+    char buffer[32];
+    if (n >= 10'000'000) std::snprintf(buffer, sizeof buffer, "%.1fM", static_cast<double>(n) / 1e6);
+    else std::snprintf(buffer, sizeof buffer, "%llu", static_cast<unsigned long long>(n));
+    return buffer;
+}
+}  // namespace
+
+std::string summary_line(const RenderStats& s) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer,
+                  "%dx%d, %d spp, %d thread%s: %.3f s; %s rays (%s camera, %s shadow), %s hits; "
+                  "%s evaluations (%s point, %s interval)",
+                  s.width, s.height, s.samples_per_pixel, s.threads, s.threads == 1 ? "" : "s", s.seconds,
+                  count(s.camera_rays + s.shadow_rays).c_str(), count(s.camera_rays).c_str(),
+                  count(s.shadow_rays).c_str(), count(s.hits).c_str(),
+                  count(s.counters.point_evaluations + s.counters.interval_evaluations).c_str(),
+                  count(s.counters.point_evaluations).c_str(), count(s.counters.interval_evaluations).c_str());
+    return buffer;
+}
+
+}  // namespace zeroset

@@ -1,0 +1,26 @@
+// RenderStats: what a render cost, and its one-line summary (like POV-Ray's).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "zeroset/trace/trace_counters.hpp"
+
+namespace zeroset {
+
+struct RenderStats {
+    int width = 0;
+    int height = 0;
+    int samples_per_pixel = 0;
+    int threads = 0;
+    double seconds = 0.0;
+    std::uint64_t camera_rays = 0;
+    std::uint64_t shadow_rays = 0;
+    std::uint64_t hits = 0;
+    TraceCounters counters;
+};
+
+/// "800x600, 1 spp, 2 threads: 1.23 s; 480000 camera + 310000 shadow rays, 150000 hits; 9.1M point + 0.8M interval evaluations"
+std::string summary_line(const RenderStats& stats);
+
+}  // namespace zeroset

@@ -1,0 +1,154 @@
+// Tile scheduling over std::threads and per-pixel work.
+#include "zeroset/render/renderer.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+#include "zeroset/render/camera_rays.hpp"
+#include "zeroset/render/pixel_samples.hpp"
+#include "zeroset/render/scene_tracer.hpp"
+#include "zeroset/render/shading.hpp"
+
+namespace zeroset {
+
+namespace {
+
+constexpr int tile_size = 16;
+constexpr int max_image_side = 65536;
+constexpr int max_samples_per_pixel = 1024;
+
+struct Tile {
+    int x0, y0, x1, y1;
+};
+
+std::vector<Tile> make_tiles(int width, int height) {
+    std::vector<Tile> tiles;
+    for (int y = 0; y < height; y += tile_size)
+        for (int x = 0; x < width; x += tile_size)
+            tiles.push_back({x, y, std::min(x + tile_size, width), std::min(y + tile_size, height)});
+    return tiles;
+}
+
+/// Per-thread totals, merged at the end.
+struct ThreadTotals {
+    RenderStats stats;
+    ShadingCounters shading;
+    std::optional<std::pair<int, Vec3d>> first_nan;
+};
+
+void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera, int spp, SceneTracer& tracer,
+                 Image& image, ThreadTotals& totals) {
+    constexpr double far = std::numeric_limits<double>::infinity();
+    for (int py = tile.y0; py < tile.y1; ++py) {
+        for (int px = tile.x0; px < tile.x1; ++px) {
+            Vec3d sum{};
+            for (int s = 0; s < spp; ++s) {
+                const SubPixel sub = pixel_sample(px, py, s, spp);
+                const Ray ray = camera.ray(px, py, sub.x, sub.y);
+                ++totals.stats.camera_rays;
+                if (const auto hit = tracer.closest_hit(ray, far, totals.stats.counters)) {
+                    ++totals.stats.hits;
+                    sum += shade(scene, tracer, ray, *hit, totals.stats.counters, totals.shading);
+                } else {
+                    sum += scene.background;
+                }
+            }
+            const Vec3d c = sum / static_cast<double>(spp);
+            image.at(px, py) = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
+        }
+    }
+}
+
+void check_camera(const Camera& camera) {
+    const Vec3d view = camera.at - camera.from;
+    if (!(length(view) > 0.0)) throw RenderError("the camera's `from` and `at` are the same point");
+    if (!(length(cross(camera.up, view)) > 1e-12 * length(view) * length(camera.up)))
+        throw RenderError("the camera's `up` is parallel to its view direction");
+}
+
+}  // namespace
+
+void validate(const RenderSettings& s) {
+    const auto check = [](int value, int low, int high, const char* what) {
+        if (value < low || value > high) {
+            std::ostringstream message;
+            message << what << " must be between " << low << " and " << high << ", got " << value;
+            throw RenderError(message.str());
+        }
+    };
+    check(s.width, 1, max_image_side, "width");
+    check(s.height, 1, max_image_side, "height");
+    check(s.samples_per_pixel, 1, max_samples_per_pixel, "samples per pixel");
+    check(s.threads, 0, 4096, "threads");
+}
+
+RenderResult render(const Scene& scene, const RenderSettings& settings) {
+    validate(settings);
+    check_camera(scene.camera);
+    const auto start = std::chrono::steady_clock::now();
+
+    const PreparedScene prepared(scene);
+    const CameraRays camera(scene.camera, settings.width, settings.height);
+    const std::vector<Tile> tiles = make_tiles(settings.width, settings.height);
+    const int thread_count = settings.threads > 0
+                                 ? settings.threads
+                                 : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+
+    RenderResult result{Image(settings.width, settings.height), {}};
+    std::vector<ThreadTotals> totals(static_cast<std::size_t>(thread_count));
+    std::atomic<std::size_t> next_tile{0};
+    std::mutex progress_mutex;
+    int tiles_done = 0;
+
+    const auto worker = [&](ThreadTotals& mine) {
+        SceneTracer tracer(prepared);
+        for (std::size_t i = next_tile++; i < tiles.size(); i = next_tile++) {
+            render_tile(tiles[i], scene, camera, settings.samples_per_pixel, tracer, result.image, mine);
+            if (settings.on_progress) {
+                std::lock_guard lock(progress_mutex);
+                settings.on_progress(++tiles_done, static_cast<int>(tiles.size()));
+            }
+        }
+        mine.first_nan = tracer.first_nan();
+    };
+    {
+        std::vector<std::jthread> pool;
+        for (int t = 1; t < thread_count; ++t) pool.emplace_back(worker, std::ref(totals[static_cast<std::size_t>(t)]));
+        worker(totals[0]);
+    }
+
+    RenderStats& stats = result.stats;
+    for (const ThreadTotals& t : totals) {
+        stats.camera_rays += t.stats.camera_rays;
+        stats.hits += t.stats.hits;
+        stats.shadow_rays += t.shading.shadow_rays;
+        stats.counters += t.stats.counters;
+        if (t.first_nan && stats.counters.nan_evaluations > 0) {
+            const auto& [object, p] = *t.first_nan;
+            const std::string& name = scene.objects[static_cast<std::size_t>(object)].name;
+            std::ostringstream message;
+            message.precision(6);
+            message << "the surface of object ";
+            if (name.empty()) message << '#' << object + 1;
+            else message << '\'' << name << '\'';
+            message << " evaluates to NaN at (" << p.x << ", " << p.y << ", " << p.z
+                    << ") — a function outside its domain there (sqrt or log of a negative number, 0/0, …); "
+                       "fix the expression or tighten the bounds";
+            throw RenderError(message.str());
+        }
+    }
+    stats.width = settings.width;
+    stats.height = settings.height;
+    stats.samples_per_pixel = settings.samples_per_pixel;
+    stats.threads = thread_count;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace zeroset

@@ -1,0 +1,49 @@
+// Blinn–Phong: ambient + Σ over visible lights (diffuse + specular).
+#include "zeroset/render/shading.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace zeroset {
+
+namespace {
+
+/// Shadow rays start a little off the surface along the normal, far enough
+/// that the surface just hit is not found again (its hit tolerance is
+/// relative to the object's size, see SceneTracer).
+double shadow_offset(const PreparedScene& prepared, const SurfaceHit& hit) {
+    return 1e-4 * prepared.objects()[static_cast<std::size_t>(hit.object)].box.diagonal();
+}
+
+}  // namespace
+
+Vec3d shade(const Scene& scene, SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit,
+            TraceCounters& counters, ShadingCounters& shading) {
+    const Material& m = scene.objects[static_cast<std::size_t>(hit.object)].material;
+    Vec3d color = hadamard(scene.ambient, m.color) * m.ambient;
+    const Vec3d origin = hit.point + hit.normal * shadow_offset(tracer.prepared(), hit);
+    for (const Light& light : tracer.prepared().lights()) {
+        Vec3d to_light;
+        double distance = std::numeric_limits<double>::infinity();
+        if (light.kind == Light::Kind::Point) {
+            to_light = light.position - hit.point;
+            distance = length(to_light);
+            to_light = to_light / distance;
+        } else {
+            to_light = -normalize(light.direction);
+        }
+        const double lambert = dot(hit.normal, to_light);
+        if (lambert <= 0.0) continue;
+        if (light.casts_shadows) {
+            ++shading.shadow_rays;
+            if (tracer.occluded({origin, to_light}, distance, counters)) continue;
+        }
+        const Vec3d half = normalize(to_light - ray.dir);
+        const double specular = std::pow(std::max(0.0, dot(hit.normal, half)), m.shininess);
+        color += hadamard(light.color, m.color * (m.diffuse * lambert) + Vec3d{1, 1, 1} * (m.specular * specular));
+    }
+    return color;
+}
+
+}  // namespace zeroset

@@ -1,0 +1,18 @@
+// Shading: Blinn–Phong with shadows. Point lights are not attenuated with
+// distance (as in POV-Ray's default), so a scene's look does not depend on
+// its scale.
+#pragma once
+
+#include "zeroset/render/scene_tracer.hpp"
+
+namespace zeroset {
+
+struct ShadingCounters {
+    std::uint64_t shadow_rays = 0;
+};
+
+/// Linear RGB leaving the hit point towards the ray's origin.
+Vec3d shade(const Scene& scene, SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit,
+            TraceCounters& counters, ShadingCounters& shading);
+
+}  // namespace zeroset

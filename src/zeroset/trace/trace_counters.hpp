@@ -1,0 +1,22 @@
+// TraceCounters: the work a ray query spends, so methods can be compared on
+// the same ray (DESIGN.md) and the renderer can report totals.
+#pragma once
+
+#include <cstdint>
+
+namespace zeroset {
+
+struct TraceCounters {
+    std::uint64_t point_evaluations = 0;     // f at a point
+    std::uint64_t interval_evaluations = 0;  // f and ∇f over a box
+    std::uint64_t nan_evaluations = 0;       // point evaluations that gave NaN
+
+    TraceCounters& operator+=(const TraceCounters& o) {
+        point_evaluations += o.point_evaluations;
+        interval_evaluations += o.interval_evaluations;
+        nan_evaluations += o.nan_evaluations;
+        return *this;
+    }
+};
+
+}  // namespace zeroset
