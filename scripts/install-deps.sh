@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the Debian packages zeroset needs to build, test and benchmark.
+# Idempotent: when everything is present it only checks and returns at once.
+set -euo pipefail
+
+packages=(
+  g++ cmake ninja-build pkgconf       # toolchain
+  libpng-dev                          # PNG output
+  libgtest-dev libgmock-dev           # tests
+  libmpfi-dev libmpfr-dev libgmp-dev  # high-precision oracles for the tests
+  libbenchmark-dev                    # benchmarks
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "install-deps: installing ${missing[*]}" >&2
+sudo_cmd=()
+[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -q
+"${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
