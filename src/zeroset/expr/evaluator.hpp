@@ -28,7 +28,11 @@ public:
         s[Tape::slot_x] = x;
         s[Tape::slot_y] = y;
         s[Tape::slot_z] = z;
-        for (const Clause& c : tape_->clauses()) s[c.out] = apply_op<T>(c.op, s[c.a], s[c.b], static_cast<int>(c.b));
+        for (const Clause& c : tape_->clauses()) {
+            // Powi's b is its exponent, not a slot: it may lie past the last slot.
+            const T& b = s[c.op == Op::Powi ? c.a : c.b];
+            s[c.out] = apply_op<T>(c.op, s[c.a], b, static_cast<int>(c.b));
+        }
         return s[tape_->result_slot()];
     }
 

@@ -12,7 +12,9 @@ LipschitzBound lipschitz_bound(Evaluator<Dual<Interval>>& eval, const Box3& box)
     Interval sum_of_squares(0.0);
     for (int axis = 0; axis < 3; ++axis) {
         const Interval g = f.g[axis];
-        if (g.is_empty()) continue;  // f is nowhere defined here
+        // An empty component where the value is defined means the enclosure
+        // lost track of the derivative: no finite bound can be claimed.
+        if (g.is_empty()) return {f.v, f.v.is_empty() ? 0.0 : std::numeric_limits<double>::infinity()};
         sum_of_squares = sum_of_squares + square(Interval(g.magnitude()));
     }
     double constant = sqrt(sum_of_squares).hi;

@@ -14,7 +14,8 @@ struct LipschitzBound {
 };
 
 /// L = sqrt(Σ max|∂f/∂xᵢ|²) over the box, rounded up. Where f is undefined
-/// over part of the box, that part is ignored (the enclosure clips domains).
+/// over part of the box, that part is ignored (the enclosure clips domains);
+/// where the gradient cannot be enclosed, L is +∞.
 LipschitzBound lipschitz_bound(Evaluator<Dual<Interval>>& eval, const Box3& box);
 
 }  // namespace zeroset

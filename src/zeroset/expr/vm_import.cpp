@@ -81,7 +81,8 @@ Expr import_vm(std::istream& in) {
         } else if (const auto op = op_from_name(opcode); op && op != Op::Powi && op != Op::Const) {
             const int arity = op_arity(*op);
             expect_count(static_cast<std::size_t>(arity));
-            value = arity == 1 ? Expr::make(*op, operand(2)) : Expr::make(*op, operand(2), operand(3));
+            const Expr a = operand(2);  // before operand(3): the first unknown operand is the one reported
+            value = arity == 1 ? Expr::make(*op, a) : Expr::make(*op, a, operand(3));
         } else {
             throw fail(tokens[1], "unknown opcode `" + std::string(opcode) + "`");
         }

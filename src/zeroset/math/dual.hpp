@@ -64,6 +64,13 @@ template <class T> Dual<T> powi(const Dual<T>& a, int n) {
 template <class T> Dual<T> pow(const Dual<T>& a, const Dual<T>& b) {
     const bool constant_exponent = is_exact_zero(b.g.x) && is_exact_zero(b.g.y) && is_exact_zero(b.g.z);
     if (constant_exponent) {
+        // An integral exponent allows negative bases; b − 1 computed in T may
+        // not be integral any more (an interval is widened), so use powi.
+        if (const auto n = integer_value(b.v)) {
+            Dual<T> r = powi(a, *n);
+            r.v = pow(a.v, b.v);  // the very value the plain evaluators compute
+            return r;
+        }
         return detail::chain(a, pow(a.v, b.v), b.v * pow(a.v, b.v - T(1.0)));
     }
     return exp(b * log(a));  // a^b = e^(b ln a), for a > 0

@@ -11,17 +11,29 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "zeroset/math/scalar.hpp"
 
 namespace zeroset {
 
 namespace rounding {
-inline double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
-inline double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+/// The next double towards −∞ (std::nextafter without the libm call: this
+/// runs for every bound of every interval op). ±∞ and NaN map to themselves
+/// except +∞, which becomes the largest finite double — still a lower bound.
+inline double down(double x) {
+    if (x != x || x == -std::numeric_limits<double>::infinity()) return x;
+    if (x == 0.0) return -std::numeric_limits<double>::denorm_min();
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    return std::bit_cast<double>(x > 0.0 ? bits - 1 : bits + 1);
+}
+/// The next double towards +∞.
+inline double up(double x) { return -down(-x); }
 inline double down2(double x) { return down(down(x)); }
 inline double up2(double x) { return up(up(x)); }
 }  // namespace rounding
@@ -100,11 +112,12 @@ inline Interval operator*(double a, Interval b) { return Interval(a) * b; }
 inline Interval operator/(Interval a, double b) { return a / Interval(b); }
 inline Interval operator/(double a, Interval b) { return Interval(a) / b; }
 
-/// Tight square: starts at 0 when the argument contains 0.
+/// Tight square: starts at 0 when the argument contains 0, and rounding down
+/// stops at 0 (else powi(a, −2) = 1/square(a) would see a divisor straddling 0).
 inline Interval square(Interval a) {
     if (a.is_empty()) return a;
-    if (a.lo >= 0.0) return {rounding::down(a.lo * a.lo), rounding::up(a.hi * a.hi)};
-    if (a.hi <= 0.0) return {rounding::down(a.hi * a.hi), rounding::up(a.lo * a.lo)};
+    if (a.lo >= 0.0) return {std::max(0.0, rounding::down(a.lo * a.lo)), rounding::up(a.hi * a.hi)};
+    if (a.hi <= 0.0) return {std::max(0.0, rounding::down(a.hi * a.hi)), rounding::up(a.lo * a.lo)};
     const double m = std::max(-a.lo, a.hi);
     return {0.0, rounding::up(m * m)};
 }
@@ -172,9 +185,20 @@ inline Interval powi(Interval a, int n) {
     if (n == 2) return square(a);
     if (n < 0) return Interval(1.0) / powi(a, -n);
     const auto p = [n](double v) { return std::pow(v, static_cast<double>(n)); };
-    if (n % 2 == 1) return {rounding::down2(p(a.lo)), rounding::up2(p(a.hi))};
+    if (n % 2 == 1) {
+        // Odd powers keep the sign: a bound at 0 stays at 0 (else 1/a^n of a
+        // one-signed a would see a divisor straddling 0 and answer ℝ).
+        const double lo = rounding::down2(p(a.lo)), hi = rounding::up2(p(a.hi));
+        return {a.lo >= 0.0 ? std::max(0.0, lo) : lo, a.hi <= 0.0 ? std::min(0.0, hi) : hi};
+    }
     const Interval m = abs(a);
     return {std::max(0.0, rounding::down2(p(m.lo))), rounding::up2(p(m.hi))};
+}
+
+/// The value as an int when the interval is a single, moderately sized integer.
+inline std::optional<int> integer_value(Interval a) {
+    if (a.lo != a.hi) return std::nullopt;
+    return integer_value(a.lo);
 }
 
 /// a^b. An exponent that is a single integer behaves as powi (negative bases
@@ -182,8 +206,7 @@ inline Interval powi(Interval a, int n) {
 inline Interval pow(Interval a, Interval b) {
     constexpr double inf = std::numeric_limits<double>::infinity();
     if (a.is_empty() || b.is_empty()) return Interval::empty();
-    if (b.lo == b.hi && b.lo == std::round(b.lo) && std::abs(b.lo) < 1 << 30)
-        return powi(a, static_cast<int>(b.lo));
+    if (const auto n = integer_value(b)) return powi(a, *n);
     if (a.hi < 0.0) return Interval::empty();
     const Interval base{std::max(a.lo, 0.0), a.hi};
     if (b.lo == b.hi) {  // a constant real exponent: monotone in the base

@@ -74,11 +74,19 @@ template <class T> Jet<T> cos(const Jet<T>& a) {
 }
 template <class T> Jet<T> powi(const Jet<T>& a, int n) {
     if (n == 0) return Jet<T>(1.0);
+    if (n == 1) return a;  // the general rule would give H″ = 0 · a^(−1), NaN at a = 0
     const double nd = static_cast<double>(n);
     return detail::chain(a, powi(a.v, n), T(nd) * powi(a.v, n - 1), T(nd * (nd - 1.0)) * powi(a.v, n - 2));
 }
 template <class T> Jet<T> pow(const Jet<T>& a, const Jet<T>& b) {
     if (is_exact_zero(b.d1) && is_exact_zero(b.d2)) {
+        // An integral exponent allows negative bases; p − 1 computed in T may
+        // not be integral any more (an interval is widened), so use powi.
+        if (const auto n = integer_value(b.v)) {
+            Jet<T> r = powi(a, *n);
+            r.v = pow(a.v, b.v);  // the very value the plain evaluators compute
+            return r;
+        }
         const T p = b.v;
         return detail::chain(a, pow(a.v, p), p * pow(a.v, p - T(1.0)),
                              p * (p - T(1.0)) * pow(a.v, p - T(2.0)));
@@ -86,24 +94,33 @@ template <class T> Jet<T> pow(const Jet<T>& a, const Jet<T>& b) {
     return exp(b * log(a));  // a^b = e^(b ln a), for a > 0
 }
 
+namespace detail {
+/// H″ where the winning branch of abs/min/max may change inside the segment.
+/// H′ can jump at the kink, so no finite H″ bounds its variation there — and
+/// the LG method (Fig. 11) uses max|H″| as Lip H′: the answer is unbounded.
+/// (A plain number always knows the winner; only NaN gets here.)
+template <std::floating_point F> F second_derivative_across_kink(F a, F /*b*/) { return a; }
+inline Interval second_derivative_across_kink(Interval, Interval) { return Interval::entire(); }
+}  // namespace detail
+
 /// |a|, min, max: the winning branch; where it is ambiguous over an interval,
-/// the hull of both branches' derivatives. (At the kink itself H′ jumps, so
-/// H″ has no finite bound there; the survey's §7 notes that methods needing
-/// smooth derivatives must treat such CSG with care.)
+/// the hull of both branches' H′ (H stays continuous, so that bounds its
+/// variation) and an unbounded H″ (see above; the survey's §7 notes that
+/// methods needing smooth derivatives must treat such CSG with care).
 template <class T> Jet<T> abs(const Jet<T>& a) {
     if (certainly_le(T(0.0), a.v)) return a;
     if (certainly_le(a.v, T(0.0))) return -a;
-    return {abs(a.v), hull(a.d1, -a.d1), hull(a.d2, -a.d2)};
+    return {abs(a.v), hull(a.d1, -a.d1), detail::second_derivative_across_kink(a.d2, -a.d2)};
 }
 template <class T> Jet<T> min(const Jet<T>& a, const Jet<T>& b) {
     if (certainly_le(a.v, b.v)) return a;
     if (certainly_le(b.v, a.v)) return b;
-    return {min(a.v, b.v), hull(a.d1, b.d1), hull(a.d2, b.d2)};
+    return {min(a.v, b.v), hull(a.d1, b.d1), detail::second_derivative_across_kink(a.d2, b.d2)};
 }
 template <class T> Jet<T> max(const Jet<T>& a, const Jet<T>& b) {
     if (certainly_le(b.v, a.v)) return a;
     if (certainly_le(a.v, b.v)) return b;
-    return {max(a.v, b.v), hull(a.d1, b.d1), hull(a.d2, b.d2)};
+    return {max(a.v, b.v), hull(a.d1, b.d1), detail::second_derivative_across_kink(a.d2, b.d2)};
 }
 
 }  // namespace zeroset

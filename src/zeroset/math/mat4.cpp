@@ -1,6 +1,7 @@
 // Mat4 arithmetic; the inverse uses Gauss–Jordan elimination with partial pivoting.
 #include "zeroset/math/mat4.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -59,13 +60,20 @@ Mat4 Mat4::transpose() const {
 std::optional<Mat4> Mat4::inverse() const {
     Mat4 a = *this;
     Mat4 inv = identity();
+    // Each row's largest entry. Rows that are dependent up to rounding leave a
+    // pivot of rounding-error size *relative to its row*, not an exact 0, so
+    // singularity is judged against the row's scale.
+    std::array<double, 4> row_scale{};
+    for (int row = 0; row < 4; ++row)
+        for (const double v : a.m[row]) row_scale[row] = std::max(row_scale[row], std::abs(v));
     for (int col = 0; col < 4; ++col) {
         int pivot = col;
         for (int row = col + 1; row < 4; ++row)
             if (std::abs(a.m[row][col]) > std::abs(a.m[pivot][col])) pivot = row;
-        if (std::abs(a.m[pivot][col]) < 1e-300) return std::nullopt;
+        if (!(std::abs(a.m[pivot][col]) > 1e-12 * row_scale[pivot])) return std::nullopt;
         std::swap(a.m[col], a.m[pivot]);
         std::swap(inv.m[col], inv.m[pivot]);
+        std::swap(row_scale[col], row_scale[pivot]);
         const double scale = 1.0 / a.m[col][col];
         for (int j = 0; j < 4; ++j) {
             a.m[col][j] *= scale;

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <concepts>
+#include <optional>
 
 namespace zeroset {
 
@@ -29,6 +30,12 @@ template <std::floating_point F> inline F powi(F a, int n) {
         n >>= 1;
     }
     return result;
+}
+/// The value as an int when it is exactly a moderately sized integer: then
+/// pow(a, b) = powi(a, n), whose domain includes negative bases.
+template <std::floating_point F> inline std::optional<int> integer_value(F a) {
+    if (a == std::round(a) && std::abs(a) < F(1 << 30)) return static_cast<int>(a);
+    return std::nullopt;
 }
 // NaN-propagating min/max: a NaN operand must not be silently dropped.
 template <std::floating_point F> inline F min(F a, F b) { return (a != a || b != b) ? a + b : (a < b ? a : b); }

@@ -1,0 +1,134 @@
+// Expr: hash-consing, canonical order of commutative ops, constant folding and
+// the builders' small simplifications.
+#include "zeroset/expr/expr.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace zeroset {
+namespace {
+
+const Expr X = var_x(), Y = var_y(), Z = var_z();
+
+TEST(Expr, SameExpressionTwiceIsTheSameNode) {
+    const Expr a = sqrt(square(X) + square(Y) + square(Z)) - 1.0;
+    const Expr b = sqrt(square(X) + square(Y) + square(Z)) - 1.0;
+    EXPECT_EQ(a.id(), b.id());
+    EXPECT_TRUE(a == b);
+    EXPECT_EQ(var_x().id(), X.id());
+    EXPECT_EQ(Expr(2.5).id(), Expr(2.5).id());
+    // Different expressions are different nodes.
+    EXPECT_NE((X - Y).id(), (Y - X).id());
+    EXPECT_NE(Expr(0.0).id(), Expr(-0.0).id());  // distinct constants, bit for bit
+    EXPECT_NE(powi(X, 3).id(), powi(X, 4).id());
+    EXPECT_NE(sin(X).id(), cos(X).id());
+}
+
+TEST(Expr, CommutativeOpsShareANode) {
+    EXPECT_EQ((X + Y).id(), (Y + X).id());
+    EXPECT_EQ((X * sin(Z)).id(), (sin(Z) * X).id());
+    EXPECT_EQ(min(X, Y).id(), min(Y, X).id());
+    EXPECT_EQ(max(X, square(Y)).id(), max(square(Y), X).id());
+    EXPECT_NE((X / Y).id(), (Y / X).id());
+    EXPECT_NE(pow(X, Y).id(), pow(Y, X).id());
+}
+
+TEST(Expr, SharedStructureIsCountedOnce) {
+    const Expr r = sqrt(square(X) + square(Y));
+    const Expr f = r * r + sin(r);
+    // Nodes: x, y, x², y², x²+y², r, r·r, sin r, sum.
+    EXPECT_EQ(f.node_count(), 9u);
+    EXPECT_EQ(X.node_count(), 1u);
+}
+
+TEST(Expr, ConstantFolding) {
+    const Expr a = Expr(2.0) + Expr(3.0);
+    ASSERT_TRUE(a.is_constant());
+    EXPECT_EQ(a.value(), 5.0);
+    EXPECT_EQ(sqrt(Expr(16.0)).value(), 4.0);
+    EXPECT_EQ(powi(Expr(-2.0), 3).value(), -8.0);
+    EXPECT_EQ(min(Expr(1.0), Expr(-1.0)).value(), -1.0);
+    EXPECT_DOUBLE_EQ(exp(Expr(1.0)).value(), std::exp(1.0));
+    EXPECT_EQ(pow(Expr(4.0), Expr(0.5)).value(), 2.0);
+    // Folding nests: the whole subtree collapses to one node.
+    const Expr c = sin(Expr(0.5)) * cos(Expr(0.5)) + square(Expr(3.0));
+    ASSERT_TRUE(c.is_constant());
+    EXPECT_DOUBLE_EQ(c.value(), std::sin(0.5) * std::cos(0.5) + 9.0);
+    EXPECT_EQ(c.node_count(), 1u);
+    // A constant outside a function's domain folds to NaN rather than failing.
+    EXPECT_TRUE(std::isnan(sqrt(Expr(-1.0)).value()));
+    // Not folded: anything with a variable.
+    EXPECT_FALSE((X + 1.0).is_constant());
+    EXPECT_TRUE((Expr(2.0) * Expr(3.0)).is_constant_valued());
+    EXPECT_FALSE(sin(X).is_constant_valued());
+}
+
+TEST(Expr, IdentitiesAreApplied) {
+    EXPECT_EQ((X + 0.0).id(), X.id());
+    EXPECT_EQ((0.0 + X).id(), X.id());
+    EXPECT_EQ((X - 0.0).id(), X.id());
+    EXPECT_EQ((X * 1.0).id(), X.id());
+    EXPECT_EQ((1.0 * X).id(), X.id());
+    EXPECT_EQ((X / 1.0).id(), X.id());
+    EXPECT_EQ((-(-X)).id(), X.id());
+    EXPECT_EQ(min(X, X).id(), X.id());
+    EXPECT_EQ(max(Y, Y).id(), Y.id());
+    // x·0 is not 0: for x = ∞ or NaN it is NaN.
+    EXPECT_FALSE((X * 0.0).is_constant());
+}
+
+TEST(Expr, PowBecomesPowiForIntegralExponents) {
+    EXPECT_EQ(pow(X, Expr(2.0)).id(), square(X).id());
+    EXPECT_EQ(pow(X, Expr(3.0)).op(), Op::Powi);
+    EXPECT_EQ(pow(X, Expr(3.0)).exponent(), 3);
+    EXPECT_EQ(pow(X, Expr(-2.0)).exponent(), -2);
+    EXPECT_EQ(pow(X, Expr(1.0)).id(), X.id());
+    EXPECT_TRUE(pow(X, Expr(0.0)).is_constant());
+    EXPECT_EQ(pow(X, Expr(0.0)).value(), 1.0);
+    EXPECT_EQ(pow(X, Expr(2.5)).op(), Op::Pow);
+    EXPECT_EQ(pow(X, Y).op(), Op::Pow);
+    EXPECT_EQ(powi(X, 2).id(), square(X).id());
+}
+
+TEST(Expr, OperandsAndPrinting) {
+    const Expr f = sin(X) / (Y - 2.0);
+    EXPECT_EQ(f.op(), Op::Div);
+    EXPECT_EQ(f.operand(0).id(), sin(X).id());
+    EXPECT_EQ(f.operand(1).op(), Op::Sub);
+    EXPECT_EQ(f.to_string(), "(sin(x) / (y - 2))");
+    EXPECT_EQ(powi(Z, 3).to_string(), "z^3");
+    EXPECT_EQ(max(X, Y).to_string().substr(0, 4), "max(");
+}
+
+TEST(Expr, OpTableNames) {
+    for (int i = 0; i < op_count; ++i) {
+        const auto op = static_cast<Op>(i);
+        const auto found = op_from_name(op_name(op));
+        ASSERT_TRUE(found.has_value()) << op_name(op);
+        EXPECT_EQ(*found, op);
+    }
+    EXPECT_FALSE(op_from_name("frobnicate").has_value());
+    EXPECT_EQ(op_arity(Op::Const), 0);
+    EXPECT_EQ(op_arity(Op::Powi), 1);
+    EXPECT_EQ(op_arity(Op::Max), 2);
+}
+
+TEST(Expr, UnusedNodesAreFreedAndRebuilt) {
+    // Hash-consing holds nodes weakly: rebuilding after the last handle died
+    // still yields a working, consistent node.
+    const void* first = nullptr;
+    {
+        const Expr e = sin(X * 12345.678) + cos(Y);
+        first = e.id();
+        EXPECT_NE(first, nullptr);
+    }
+    for (int i = 0; i < 5000; ++i) (void)(X * static_cast<double>(i) + Y);  // churn the table, forcing sweeps
+    const Expr again = sin(X * 12345.678) + cos(Y);
+    EXPECT_EQ(again.id(), (sin(X * 12345.678) + cos(Y)).id());
+    EXPECT_EQ(again.operand(0).op() == Op::Sin ? again.operand(0).operand(0).op() : again.operand(1).operand(0).op(),
+              Op::Mul);
+}
+
+}  // namespace
+}  // namespace zeroset

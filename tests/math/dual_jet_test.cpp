@@ -1,0 +1,192 @@
+// Dual and Jet: every derivative rule against its closed form, for plain
+// numbers and for intervals (the enclosure must contain the point derivative).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "zeroset/math/dual.hpp"
+#include "zeroset/math/jet.hpp"
+
+namespace zeroset {
+namespace {
+
+/// A unary rule: the function applied generically, and its closed-form g, g′, g″.
+struct Rule {
+    std::string name;
+    std::function<Dual<double>(const Dual<double>&)> dual;
+    std::function<Jet<double>(const Jet<double>&)> jet;
+    std::function<Dual<Interval>(const Dual<Interval>&)> dual_interval;
+    std::function<Jet<Interval>(const Jet<Interval>&)> jet_interval;
+    std::function<double(double)> g, g1, g2;
+    std::vector<double> at;  // sample arguments
+};
+
+template <class F>
+Rule make_rule(std::string name, F f, double (*g)(double), double (*g1)(double), double (*g2)(double),
+               std::vector<double> at) {
+    return {std::move(name), f, f, f, f, g, g1, g2, std::move(at)};
+}
+
+// `body` is written once over the number type N of the argument u.
+#define ZEROSET_RULE(name, body, g, g1, g2, ...)                                                                       \
+    make_rule(                                                                                                         \
+        name,                                                                                                          \
+        [](const auto& u) {                                                                                            \
+            using N = std::remove_cvref_t<decltype(u)>;                                                                \
+            return N(body);                                                                                            \
+        },                                                                                                             \
+        []([[maybe_unused]] double v) -> double { return g; }, []([[maybe_unused]] double v) -> double { return g1; }, \
+        []([[maybe_unused]] double v) -> double { return g2; }, {__VA_ARGS__})
+
+std::vector<Rule> rules() {
+    using std::cos, std::exp, std::log, std::pow, std::sin, std::sqrt;
+    return {
+        ZEROSET_RULE("square", square(u), v * v, 2 * v, 2.0, -1.5, 0.0, 0.7),
+        ZEROSET_RULE("sqrt", sqrt(u), sqrt(v), 0.5 / sqrt(v), -0.25 / (v * sqrt(v)), 0.3, 2.0, 9.0),
+        ZEROSET_RULE("exp", exp(u), exp(v), exp(v), exp(v), -2.0, 0.0, 1.5),
+        ZEROSET_RULE("log", log(u), log(v), 1 / v, -1 / (v * v), 0.2, 1.0, 7.0),
+        ZEROSET_RULE("sin", sin(u), sin(v), cos(v), -sin(v), -2.0, 0.0, 1.5707963267948966, 4.0),
+        ZEROSET_RULE("cos", cos(u), cos(v), -sin(v), -cos(v), -2.0, 0.0, 3.0, 4.0),
+        ZEROSET_RULE("abs", abs(u), std::abs(v), v < 0 ? -1.0 : 1.0, 0.0, -2.0, 0.5),
+        ZEROSET_RULE("neg", -u, -v, -1.0, 0.0, -2.0, 0.5),
+        ZEROSET_RULE("powi 1", powi(u, 1), v, 1.0, 0.0, -1.5, 0.0, 2.0),
+        ZEROSET_RULE("powi 3", powi(u, 3), v * v * v, 3 * v * v, 6 * v, -1.5, 0.0, 2.0),
+        ZEROSET_RULE("powi 4", powi(u, 4), v * v * v * v, 4 * v * v * v, 12 * v * v, -1.5, 0.0, 2.0),
+        ZEROSET_RULE("powi -2", powi(u, -2), 1 / (v * v), -2 / (v * v * v), 6 / (v * v * v * v), -1.5, 0.5, 2.0),
+        ZEROSET_RULE("pow 2.5", pow(u, N(2.5)), pow(v, 2.5), 2.5 * pow(v, 1.5), 3.75 * pow(v, 0.5), 0.5, 2.0),
+        ZEROSET_RULE("pow -0.5", pow(u, N(-0.5)), pow(v, -0.5), -0.5 * pow(v, -1.5), 0.75 * pow(v, -2.5), 0.5, 2.0),
+        // An integral exponent reached through pow (a .vm `pow`, or |n| > 1024):
+        // negative bases are in its domain.
+        ZEROSET_RULE("pow 3", pow(u, N(3.0)), v * v * v, 3 * v * v, 6 * v, -1.5, 0.0, 2.0),
+        ZEROSET_RULE("pow 1", pow(u, N(1.0)), v, 1.0, 0.0, -1.5, 0.0, 2.0),
+        ZEROSET_RULE("pow -3", pow(u, N(-3.0)), 1 / (v * v * v), -3 / (v * v * v * v), 12 / (v * v * v * v * v), -1.5,
+                     0.5),
+        ZEROSET_RULE("u*u", u * u, v * v, 2 * v, 2.0, -1.5, 0.0, 0.7),
+        ZEROSET_RULE("1/u", N(1.0) / u, 1 / v, -1 / (v * v), 2 / (v * v * v), -1.5, 0.5),
+        ZEROSET_RULE("min(u, 1-u)", min(u, N(1.0) - u), std::min(v, 1 - v), v < 0.5 ? 1.0 : -1.0, 0.0, -1.0, 0.2, 0.8),
+        ZEROSET_RULE("max(u, 1-u)", max(u, N(1.0) - u), std::max(v, 1 - v), v > 0.5 ? 1.0 : -1.0, 0.0, -1.0, 0.2, 0.8),
+    };
+}
+
+double tolerance(double expected) { return 1e-13 * (1.0 + std::abs(expected)); }
+
+TEST(Dual, ChainRuleAgainstClosedForms) {
+    for (const Rule& rule : rules()) {
+        for (const double v : rule.at) {
+            // Along a direction with all three components, so the gradient scales by them.
+            const Dual<double> u{v, {0.5, -2.0, 1.0}};
+            const Dual<double> r = rule.dual(u);
+            EXPECT_NEAR(r.v, rule.g(v), tolerance(rule.g(v))) << rule.name << " at " << v;
+            EXPECT_NEAR(r.g.x, 0.5 * rule.g1(v), tolerance(rule.g1(v))) << rule.name << " at " << v;
+            EXPECT_NEAR(r.g.y, -2.0 * rule.g1(v), tolerance(rule.g1(v))) << rule.name << " at " << v;
+            EXPECT_NEAR(r.g.z, rule.g1(v), tolerance(rule.g1(v))) << rule.name << " at " << v;
+        }
+    }
+}
+
+TEST(Jet, ChainRuleAgainstClosedForms) {
+    for (const Rule& rule : rules()) {
+        for (const double v : rule.at) {
+            // u(t) = v + 0.5 (t − t₀) + 0.25 (t − t₀)² around t₀: u′ = 0.5, u″ = 0.5.
+            const Jet<double> u{v, 0.5, 0.5};
+            const Jet<double> r = rule.jet(u);
+            const double d1 = rule.g1(v) * 0.5, d2 = rule.g2(v) * 0.25 + rule.g1(v) * 0.5;
+            EXPECT_NEAR(r.v, rule.g(v), tolerance(rule.g(v))) << rule.name << " at " << v;
+            EXPECT_NEAR(r.d1, d1, tolerance(d1)) << rule.name << " at " << v;
+            EXPECT_NEAR(r.d2, d2, tolerance(d2)) << rule.name << " at " << v;
+        }
+    }
+}
+
+/// An interval around v of half-width w, as a number type with derivatives.
+TEST(DualInterval, EnclosesThePointDerivatives) {
+    for (const Rule& rule : rules()) {
+        for (const double v : rule.at) {
+            for (const double w : {0.0, 1e-9, 1e-3, 0.1}) {
+                const Interval a{v - w, v + w};
+                const Dual<Interval> r = rule.dual_interval({a, {Interval(0.5), Interval(-2.0), Interval(1.0)}});
+                for (const double s : {v - w, v, v + w}) {
+                    const double g = rule.g(s), g1 = rule.g1(s);
+                    if (!std::isfinite(g) || !std::isfinite(g1)) continue;
+                    const std::string where = rule.name + " over [" + std::to_string(a.lo) + ", " +
+                                              std::to_string(a.hi) + "] at " + std::to_string(s);
+                    EXPECT_TRUE(r.v.contains(g)) << where << ": value [" << r.v.lo << ", " << r.v.hi << "] ∌ " << g;
+                    EXPECT_TRUE(r.g.x.contains(0.5 * g1)) << where << ": [" << r.g.x.lo << ", " << r.g.x.hi << "]";
+                    EXPECT_TRUE(r.g.y.contains(-2.0 * g1)) << where << ": [" << r.g.y.lo << ", " << r.g.y.hi << "]";
+                    EXPECT_TRUE(r.g.z.contains(g1)) << where << ": [" << r.g.z.lo << ", " << r.g.z.hi << "]";
+                }
+            }
+        }
+    }
+}
+
+TEST(JetInterval, EnclosesThePointDerivatives) {
+    for (const Rule& rule : rules()) {
+        for (const double v : rule.at) {
+            for (const double w : {0.0, 1e-9, 1e-3, 0.1}) {
+                const Interval a{v - w, v + w};
+                const Jet<Interval> r = rule.jet_interval({a, Interval(0.5), Interval(0.5)});
+                for (const double s : {v - w, v, v + w}) {
+                    const double g = rule.g(s), d1 = rule.g1(s) * 0.5, d2 = rule.g2(s) * 0.25 + rule.g1(s) * 0.5;
+                    if (!std::isfinite(g) || !std::isfinite(d1) || !std::isfinite(d2)) continue;
+                    const std::string where = rule.name + " over [" + std::to_string(a.lo) + ", " +
+                                              std::to_string(a.hi) + "] at " + std::to_string(s);
+                    EXPECT_TRUE(r.v.contains(g)) << where << ": value [" << r.v.lo << ", " << r.v.hi << "]";
+                    EXPECT_TRUE(r.d1.contains(d1)) << where << ": d1 [" << r.d1.lo << ", " << r.d1.hi << "] ∌ " << d1;
+                    EXPECT_TRUE(r.d2.contains(d2)) << where << ": d2 [" << r.d2.lo << ", " << r.d2.hi << "] ∌ " << d2;
+                }
+            }
+        }
+    }
+}
+
+TEST(Dual, ProductQuotientAndVariables) {
+    const auto x = Dual<double>::variable(3.0, 0), y = Dual<double>::variable(-2.0, 1);
+    const Dual<double> p = x * y, q = x / y;
+    EXPECT_EQ(p.v, -6.0);
+    EXPECT_EQ(p.g, (Vec3d{-2.0, 3.0, 0.0}));
+    EXPECT_EQ(q.v, -1.5);
+    EXPECT_DOUBLE_EQ(q.g.x, -0.5);
+    EXPECT_DOUBLE_EQ(q.g.y, -0.75);  // −x / y²
+    EXPECT_EQ(q.g.z, 0.0);
+    // A variable exponent: d(x^y)/dy = x^y ln x.
+    const auto b = Dual<double>::variable(2.0, 0), e = Dual<double>::variable(3.0, 1);
+    const Dual<double> r = pow(b, e);
+    EXPECT_DOUBLE_EQ(r.v, 8.0);
+    EXPECT_DOUBLE_EQ(r.g.x, 12.0);
+    EXPECT_DOUBLE_EQ(r.g.y, 8.0 * std::log(2.0));
+}
+
+TEST(Dual, KinksTakeTheHullOverAnInterval) {
+    const auto x = Dual<Interval>::variable(Interval(-1, 2), 0);
+    const Dual<Interval> a = abs(x);
+    EXPECT_TRUE(a.g.x.contains(Interval(-1, 1)));
+    const Dual<Interval> m = min(x, Dual<Interval>(0.5));
+    EXPECT_TRUE(m.g.x.contains(Interval(0, 1)));
+    // One side certainly wins: its gradient exactly.
+    const Dual<Interval> n = max(x, Dual<Interval>(5.0));
+    EXPECT_EQ(n.g.x.lo, 0.0);
+    EXPECT_EQ(n.g.x.hi, 0.0);
+}
+
+TEST(Jet, LineAndProduct) {
+    // H(t) = (1 + 2t)(3 − t) = 3 + 5t − 2t²: at t = 1, H = 6, H′ = 1, H″ = −4.
+    const Jet<double> a = Jet<double>::line(1.0, 2.0, 1.0), b = Jet<double>::line(3.0, -1.0, 1.0);
+    const Jet<double> h = a * b;
+    EXPECT_EQ(h.v, 6.0);
+    EXPECT_EQ(h.d1, 1.0);
+    EXPECT_EQ(h.d2, -4.0);
+    // (1 + 2t)/(3 − t) at t = 1: 3/2, 7/4, 7/4.
+    const Jet<double> q = a / b;
+    EXPECT_DOUBLE_EQ(q.v, 1.5);
+    EXPECT_DOUBLE_EQ(q.d1, 1.75);
+    EXPECT_DOUBLE_EQ(q.d2, 1.75);
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -1,0 +1,99 @@
+// Bounds: the enclosing box and the ray clip, for boxes and spheres.
+#include "zeroset/trace/bounds.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace zeroset {
+namespace {
+
+TEST(Bounds, EnclosingBox) {
+    const Bounds box = Bounds::make_box({{-1, -2, -3}, {1, 2, 3}});
+    EXPECT_EQ(box.enclosing_box().lo, (Vec3d{-1, -2, -3}));
+    EXPECT_EQ(box.enclosing_box().hi, (Vec3d{1, 2, 3}));
+    const Bounds sphere = Bounds::make_sphere({1, 2, 3}, 0.5);
+    EXPECT_EQ(sphere.enclosing_box().lo, (Vec3d{0.5, 1.5, 2.5}));
+    EXPECT_EQ(sphere.enclosing_box().hi, (Vec3d{1.5, 2.5, 3.5}));
+}
+
+TEST(Bounds, BoxClipIsTheSlabTest) {
+    const Bounds b = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+    const auto s = b.clip({{-3, 0.5, 0}, {1, 0, 0}}, 0.0, 10.0);
+    ASSERT_TRUE(s.has_value());
+    EXPECT_DOUBLE_EQ(s->t0, 2.0);
+    EXPECT_DOUBLE_EQ(s->t1, 4.0);
+    EXPECT_FALSE(b.clip({{-3, 1.5, 0}, {1, 0, 0}}, 0.0, 10.0).has_value());
+}
+
+TEST(Bounds, SphereClip) {
+    const Bounds b = Bounds::make_sphere({0, 0, 5}, 2.0);
+    // Straight through the centre.
+    const auto s = b.clip({{0, 0, 0}, {0, 0, 1}}, 0.0, 100.0);
+    ASSERT_TRUE(s.has_value());
+    EXPECT_DOUBLE_EQ(s->t0, 3.0);
+    EXPECT_DOUBLE_EQ(s->t1, 7.0);
+    // The direction need not be normalised: t scales inversely.
+    const auto h = b.clip({{0, 0, 0}, {0, 0, 2}}, 0.0, 100.0);
+    ASSERT_TRUE(h.has_value());
+    EXPECT_DOUBLE_EQ(h->t0, 1.5);
+    EXPECT_DOUBLE_EQ(h->t1, 3.5);
+    // Going the other way: both roots behind the origin.
+    EXPECT_FALSE(b.clip({{0, 0, 0}, {0, 0, -1}}, 0.0, 100.0).has_value());
+    // Origin inside: starts at t_min.
+    const auto inside = b.clip({{0, 0, 5}, {1, 0, 0}}, 0.0, 100.0);
+    ASSERT_TRUE(inside.has_value());
+    EXPECT_EQ(inside->t0, 0.0);
+    EXPECT_DOUBLE_EQ(inside->t1, 2.0);
+    // A miss, a tangent, and a zero direction.
+    EXPECT_FALSE(b.clip({{2.1, 0, 0}, {0, 0, 1}}, 0.0, 100.0).has_value());
+    const auto tangent = b.clip({{2, 0, 0}, {0, 0, 1}}, 0.0, 100.0);
+    ASSERT_TRUE(tangent.has_value());
+    EXPECT_NEAR(tangent->t0, 5.0, 1e-7);
+    EXPECT_NEAR(tangent->t1, 5.0, 1e-7);
+    EXPECT_FALSE(b.clip({{0, 0, 0}, {0, 0, 0}}, 0.0, 100.0).has_value());
+    // The parameter range is respected.
+    const auto part = b.clip({{0, 0, 0}, {0, 0, 1}}, 4.0, 6.0);
+    ASSERT_TRUE(part.has_value());
+    EXPECT_EQ(part->t0, 4.0);
+    EXPECT_EQ(part->t1, 6.0);
+    EXPECT_FALSE(b.clip({{0, 0, 0}, {0, 0, 1}}, 7.5, 9.0).has_value());
+}
+
+TEST(Bounds, SphereClipAgreesWithPointSamples) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-4.0, 4.0);
+    const Vec3d centre{0.3, -0.2, 0.5};
+    const double radius = 1.7;
+    const Bounds b = Bounds::make_sphere(centre, radius);
+    int hits = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const Ray ray{{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}};
+        const auto s = b.clip(ray, 0.0, 5.0);
+        hits += s.has_value();
+        for (int k = 0; k <= 500; ++k) {
+            const double t = 5.0 * k / 500.0;
+            const double d = length(ray.at(t) - centre);
+            if (d < radius * (1 - 1e-9)) {
+                ASSERT_TRUE(s.has_value()) << "ray " << i << " is inside at t = " << t;
+                ASSERT_GE(t, s->t0 - 1e-9);
+                ASSERT_LE(t, s->t1 + 1e-9);
+            }
+        }
+        if (s) {
+            // The span's ends are on the sphere or at the range's ends.
+            for (const double t : {s->t0, s->t1}) {
+                const double d = length(ray.at(t) - centre);
+                if (t != 0.0 && t != 5.0)
+                    EXPECT_NEAR(d, radius, 1e-9 * (1 + length(ray.dir) * 5));
+                else
+                    EXPECT_LE(d, radius * (1 + 1e-12));
+            }
+        }
+    }
+    EXPECT_GT(hits, 100);
+}
+
+}  // namespace
+}  // namespace zeroset
