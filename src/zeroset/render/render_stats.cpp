@@ -18,12 +18,12 @@ std::string summary_line(const RenderStats& s) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer,
                   "%dx%d, %d spp, %d thread%s: %.3f s; %s rays (%s camera, %s shadow), %s hits; "
-                  "%s evaluations (%s point, %s interval)",
+                  "%s evaluations (%s point, %s interval, %s gradient)",
                   s.width, s.height, s.samples_per_pixel, s.threads, s.threads == 1 ? "" : "s", s.seconds,
                   count(s.camera_rays + s.shadow_rays).c_str(), count(s.camera_rays).c_str(),
                   count(s.shadow_rays).c_str(), count(s.hits).c_str(),
-                  count(s.counters.point_evaluations + s.counters.interval_evaluations).c_str(),
-                  count(s.counters.point_evaluations).c_str(), count(s.counters.interval_evaluations).c_str());
+                  count(s.counters.evaluations()).c_str(), count(s.counters.point_evaluations).c_str(),
+                  count(s.counters.interval_evaluations).c_str(), count(s.counters.gradient_evaluations).c_str());
     return buffer;
 }
 

@@ -20,7 +20,7 @@ struct RenderStats {
     TraceCounters counters;
 };
 
-/// "800x600, 1 spp, 2 threads: 1.23 s; 480000 camera + 310000 shadow rays, 150000 hits; 9.1M point + 0.8M interval evaluations"
+/// "800x600, 1 spp, 2 threads: 1.23 s; 480000 camera + 310000 shadow rays, 150000 hits; 10.2M evaluations (9.1M point, 0.8M interval, 0.3M gradient)"
 std::string summary_line(const RenderStats& stats);
 
 }  // namespace zeroset

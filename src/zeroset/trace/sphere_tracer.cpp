@@ -27,12 +27,22 @@ private:
 }  // namespace
 
 SphereTracer::SphereTracer(const Tape& tape, SphereTraceSettings settings)
-    : settings_(settings), point_(tape), box_(tape) {}
+    : settings_(settings), point_(tape), range_(tape), slope_(tape) {}
 
-LipschitzBound SphereTracer::bound_segment(const Ray& ray, double a, double b, TraceCounters& counters) {
-    ++counters.interval_evaluations;
+Box3 SphereTracer::segment_box(const Ray& ray, double a, double b) {
     const Vec3d pa = ray.at(a), pb = ray.at(b);
-    return lipschitz_bound(box_, Box3{min(pa, pb), max(pa, pb)});
+    return {min(pa, pb), max(pa, pb)};
+}
+
+double SphereTracer::value_at(const Ray& ray, double t, TraceCounters& counters) {
+    const Vec3d p = ray.at(t);
+    ++counters.point_evaluations;
+    const double h = point_(p.x, p.y, p.z);
+    if (std::isnan(h)) {
+        ++counters.nan_evaluations;
+        last_nan_point_ = p;
+    }
+    return h;
 }
 
 std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCounters& counters) {
@@ -41,14 +51,21 @@ std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCo
     segments.push(span.t0, span.t1);
     while (!segments.empty()) {
         const auto [a, b] = segments.pop();
-        const LipschitzBound bound = bound_segment(ray, a, b, counters);
-        if (bound.value.is_empty()) {  // f is undefined (NaN) all over this segment
+        const Box3 box = segment_box(ray, a, b);
+
+        // Fig. 9, step 2: no root where the enclosure of f excludes 0. Plain
+        // intervals first: far cheaper than the gradient, and most segments stop here.
+        ++counters.interval_evaluations;
+        const Interval value = evaluate_box(range_, box.lo, box.hi);
+        if (value.is_empty()) {  // f is undefined (NaN) all over this segment
             ++counters.nan_evaluations;
             last_nan_point_ = ray.at(0.5 * (a + b));
             return std::nullopt;
         }
-        if (bound.value.lo > 0.0) continue;  // no surface here
-        const double lipschitz = bound.constant;
+        if (value.lo > 0.0) continue;
+
+        ++counters.gradient_evaluations;
+        const double lipschitz = lipschitz_bound(slope_, box).constant;
         const bool splittable = b - a > 2.0 * eps && segments.has_room_for_split();
         if (!std::isfinite(lipschitz)) {
             if (splittable) {
@@ -57,21 +74,41 @@ std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCo
                 segments.push(a, mid);
                 continue;
             }
-            return a;  // an unbounded slope inside an ε-segment that may hold the surface
+            // An ε-segment whose slope has no finite bound (e.g. sqrt at 0):
+            // only a sign change at its ends shows a root.
+            const double fa = value_at(ray, a, counters);
+            if (std::isnan(fa)) return std::nullopt;
+            if (fa <= 0.0) return a;
+            const double fb = value_at(ray, b, counters);
+            if (std::isnan(fb)) return std::nullopt;
+            if (fb <= 0.0) return b;
+            continue;
         }
         double t = a;
         for (int steps = 0;; ++steps) {
-            const Vec3d p = ray.at(t);
-            const double h = point_(p.x, p.y, p.z);
-            ++counters.point_evaluations;
-            if (std::isnan(h)) {
-                ++counters.nan_evaluations;
-                last_nan_point_ = p;
-                return std::nullopt;
+            const double h = value_at(ray, t, counters);
+            if (std::isnan(h)) return std::nullopt;
+            if (h <= 0.0) return t;  // on or inside the surface (only at a segment's start)
+            if (h < lipschitz * eps) {
+                // Fig. 12, step 2a: the distance bound says the surface may be
+                // within ε. A sign change just ahead confirms it; otherwise L
+                // is too loose here, so tighten it by splitting what is left.
+                const double ahead = t + 2.0 * eps;
+                const double h_ahead = value_at(ray, ahead, counters);
+                if (std::isnan(h_ahead)) return std::nullopt;
+                if (h_ahead <= 0.0) return t;
+                if (b - ahead > 2.0 * eps && segments.has_room_for_split()) {
+                    const double mid = 0.5 * (ahead + b);
+                    segments.push(mid, b);
+                    segments.push(ahead, mid);
+                    break;
+                }
+                t = ahead;  // an ε-segment positive at both ends: at most a sub-ε graze
+                if (t >= b) break;
+                continue;
             }
-            if (h <= lipschitz * eps) return t;  // Fig. 12, step 2a: within ε of the surface
-            t += h / lipschitz;                  // D(t) = H(t) / Lip H
-            if (t >= b) break;                   // this segment is clear
+            t += h / lipschitz;  // D(t) = H(t) / Lip H
+            if (t >= b) break;   // this segment is clear
             if (steps >= settings_.steps_before_split && b - t > 2.0 * eps && segments.has_room_for_split()) {
                 const double mid = 0.5 * (t + b);
                 segments.push(mid, b);

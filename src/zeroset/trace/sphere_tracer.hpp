@@ -40,12 +40,14 @@ public:
     [[nodiscard]] const Vec3d& last_nan_point() const { return last_nan_point_; }
 
 private:
-    /// Interval culling and Lipschitz bound of one segment.
-    LipschitzBound bound_segment(const Ray& ray, double a, double b, TraceCounters& counters);
+    static Box3 segment_box(const Ray& ray, double a, double b);
+    /// f at ray.at(t); a NaN is counted and its point remembered.
+    double value_at(const Ray& ray, double t, TraceCounters& counters);
 
     SphereTraceSettings settings_;
     Evaluator<double> point_;
-    Evaluator<Dual<Interval>> box_;
+    Evaluator<Interval> range_;           // f over a box
+    Evaluator<Dual<Interval>> slope_;     // f and ∇f over a box
     Vec3d last_nan_point_{};
 };
 

@@ -8,12 +8,18 @@ namespace zeroset {
 
 struct TraceCounters {
     std::uint64_t point_evaluations = 0;     // f at a point
-    std::uint64_t interval_evaluations = 0;  // f and ∇f over a box
+    std::uint64_t interval_evaluations = 0;  // f over a box
+    std::uint64_t gradient_evaluations = 0;  // f and ∇f over a box (for a Lipschitz bound)
     std::uint64_t nan_evaluations = 0;       // point evaluations that gave NaN
+
+    [[nodiscard]] std::uint64_t evaluations() const {
+        return point_evaluations + interval_evaluations + gradient_evaluations;
+    }
 
     TraceCounters& operator+=(const TraceCounters& o) {
         point_evaluations += o.point_evaluations;
         interval_evaluations += o.interval_evaluations;
+        gradient_evaluations += o.gradient_evaluations;
         nan_evaluations += o.nan_evaluations;
         return *this;
     }
