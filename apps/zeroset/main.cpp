@@ -1,1 +1,48 @@
-int main() { return 0; }
+// zeroset: the command-line program. Dispatches to subcommands and turns
+// every failure into a clear message on stderr and a non-zero exit status.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "options.hpp"
+
+namespace {
+
+constexpr const char* usage = R"(zeroset — ray tracing implicit surfaces
+
+Usage:
+  zeroset render [SCENE] [options]   render a scene (the built-in default when SCENE is omitted)
+  zeroset --help                     this text
+  zeroset render --help              the render command's options
+  zeroset --version                  the version
+
+A surface is the zero set of f(x, y, z), negative inside. Scenes are text
+files; see docs/scene-language.md.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+            std::fputs(usage, args.empty() ? stderr : stdout);
+            return args.empty() ? 2 : 0;
+        }
+        if (args[0] == "--version") {
+            std::puts("zeroset " ZEROSET_VERSION);
+            return 0;
+        }
+        const std::vector<std::string> rest(args.begin() + 1, args.end());
+        if (args[0] == "render") return zeroset::cli::render_command(rest);
+        throw zeroset::cli::UsageError("unknown command '" + args[0] + "' (try zeroset --help)");
+    } catch (const zeroset::cli::UsageError& e) {
+        std::fprintf(stderr, "zeroset: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "zeroset: error: %s\n", e.what());
+        return 1;
+    }
+}

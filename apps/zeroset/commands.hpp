@@ -1,0 +1,12 @@
+// The program's subcommands. Each returns the process exit status:
+// 0 success, 1 a failure (bad scene, render error, unwritable output), 2 bad usage.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace zeroset::cli {
+
+int render_command(const std::vector<std::string>& args);
+
+}  // namespace zeroset::cli

@@ -1,0 +1,36 @@
+// A small command-line option reader: `--name value`, `--name=value`,
+// `-o value`, flags, and positional arguments, with clear usage errors.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace zeroset::cli {
+
+/// A mistake in how the program was called (exit status 2).
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class Options {
+public:
+    /// `valued` lists the options that take a value (e.g. "--width", "-o").
+    Options(const std::vector<std::string>& args, const std::vector<std::string>& valued,
+            const std::vector<std::string>& flags);
+
+    [[nodiscard]] bool has(const std::string& name) const;
+    [[nodiscard]] std::optional<std::string> value(const std::string& name) const;
+    /// The option's value as an integer, or nothing when absent.
+    [[nodiscard]] std::optional<int> integer(const std::string& name) const;
+    [[nodiscard]] const std::vector<std::string>& positional() const { return positional_; }
+
+private:
+    std::vector<std::pair<std::string, std::string>> values_;
+    std::vector<std::string> flags_;
+    std::vector<std::string> positional_;
+};
+
+}  // namespace zeroset::cli

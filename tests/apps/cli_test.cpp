@@ -1,0 +1,178 @@
+// The zeroset program as a user meets it: exit codes, messages with
+// file:line:column, no output file on any error, and every shipped scene
+// rendered at a small size with a sensible share of the frame covered.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "zeroset/io/image_reader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+    int status;
+    std::string err;
+};
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("zeroset-cli-" + std::to_string(::getpid()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    /// Runs `zeroset ARGS` in the temp directory, capturing stderr.
+    Outcome run(const std::string& args) const {
+        const fs::path err = dir_ / "stderr.txt";
+        const std::string command =
+            "cd '" + dir_.string() + "' && '" ZEROSET_BINARY "' " + args + " > /dev/null 2> '" + err.string() + "'";
+        const int raw = std::system(command.c_str());
+        std::ifstream in(err);
+        std::stringstream text;
+        text << in.rdbuf();
+        fs::remove(err);
+        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+    }
+
+    fs::path write(const std::string& name, const std::string& text) const {
+        std::ofstream(dir_ / name) << text;
+        return dir_ / name;
+    }
+
+    /// Files in the temp directory (nothing may be left behind by a failure).
+    [[nodiscard]] std::size_t file_count() const {
+        return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
+    }
+
+    fs::path dir_;
+};
+
+double coverage(const zeroset::Image& image) {
+    // The background is uniform: count pixels that differ from the corner's.
+    const zeroset::Vec3f bg = image.at(0, 0);
+    int covered = 0;
+    for (const auto& p : image.pixels)
+        if (std::abs(p.x - bg.x) + std::abs(p.y - bg.y) + std::abs(p.z - bg.z) > 1e-3f) ++covered;
+    return static_cast<double>(covered) / static_cast<double>(image.pixels.size());
+}
+
+TEST_F(Cli, HelpListsCommandsAndOptions) {
+    EXPECT_EQ(run("--help").status, 0);
+    const Outcome no_args = run("");
+    EXPECT_EQ(no_args.status, 2);
+    EXPECT_NE(no_args.err.find("render"), std::string::npos);
+    EXPECT_EQ(run("render --help").status, 0);
+    const Outcome bad = run("frobnicate");
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.err.find("unknown command"), std::string::npos) << bad.err;
+}
+
+TEST_F(Cli, RendersTheDefaultScene) {
+    const Outcome r = run("render -o out.png --width 96 --height 72");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("96x72"), std::string::npos) << r.err;  // the summary line
+    EXPECT_NE(r.err.find("hits"), std::string::npos) << r.err;
+    const zeroset::Image image = zeroset::read_png(dir_ / "out.png");
+    EXPECT_EQ(image.width, 96);
+    EXPECT_EQ(image.height, 72);
+    const double c = coverage(image);
+    EXPECT_GT(c, 0.08);
+    EXPECT_LT(c, 0.9);
+}
+
+TEST_F(Cli, WritesPpmAndPfmByExtension) {
+    ASSERT_EQ(run("render -q -o out.ppm --width 32 --height 24").status, 0);
+    ASSERT_EQ(run("render -q -o out.pfm --width 32 --height 24").status, 0);
+    EXPECT_EQ(zeroset::read_pfm(dir_ / "out.pfm").width, 32);
+    std::ifstream ppm(dir_ / "out.ppm", std::ios::binary);
+    std::string magic;
+    ppm >> magic;
+    EXPECT_EQ(magic, "P6");
+}
+
+TEST_F(Cli, SyntaxErrorNamesFileLineColumnAndWritesNothing) {
+    write("bad.zs", "camera { from (0, 0, -5) }\nobject { surface x^2 + * y }\n");
+    const std::size_t before = file_count();
+    const Outcome r = run("render bad.zs -o out.png --width 16 --height 16");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("bad.zs:2:"), std::string::npos) << r.err;
+    EXPECT_EQ(file_count(), before);
+}
+
+TEST_F(Cli, UnknownIdentifierNamesFileLineColumn) {
+    write("unknown.zs", "object {\n  surface x^2 + y^2 + q - 1\n}\n");
+    const Outcome r = run("render unknown.zs -o out.png --width 16 --height 16");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("unknown.zs:2:23:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("'q'"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+TEST_F(Cli, NonPositiveImageSizeInSceneNamesFileLineColumn) {
+    write("size.zs", "image { width 0 height 10 }\nobject { surface x^2 + y^2 + z^2 - 1 }\n");
+    const Outcome r = run("render size.zs -o out.png");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("size.zs:1:15:"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+TEST_F(Cli, NonPositiveImageSizeOnCommandLineIsAnError) {
+    for (const char* args : {"--width 0", "--height -3", "--width abc", "--spp 0"}) {
+        const Outcome r = run(std::string("render -o out.png ") + args);
+        EXPECT_NE(r.status, 0) << args;
+        EXPECT_FALSE(r.err.empty()) << args;
+        EXPECT_FALSE(fs::exists(dir_ / "out.png")) << args;
+    }
+}
+
+TEST_F(Cli, BadOutputAndMissingSceneAreErrors) {
+    const Outcome jpg = run("render -o out.jpg --width 8 --height 8");
+    EXPECT_NE(jpg.status, 0);
+    EXPECT_NE(jpg.err.find("out.jpg"), std::string::npos) << jpg.err;
+    const Outcome missing = run("render nowhere.zs -o out.png");
+    EXPECT_NE(missing.status, 0);
+    EXPECT_NE(missing.err.find("nowhere.zs"), std::string::npos) << missing.err;
+    const Outcome no_dir = run("render -o no/such/dir/out.png --width 8 --height 8");
+    EXPECT_NE(no_dir.status, 0);
+    EXPECT_EQ(file_count(), 0u);
+}
+
+TEST_F(Cli, NanProducingFunctionIsAnErrorAndWritesNothing) {
+    write("nan.zs",
+          "camera { from (0, 0, -5) }\n"
+          "object \"root\" { surface sqrt(x) + y^2 + z^2 - 1  bounds box((-2, -2, -2), (2, 2, 2)) }\n");
+    const Outcome r = run("render nan.zs -o out.png --width 16 --height 16");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("NaN"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+/// Every scene shipped in scenes/ renders at a small size and covers a
+/// sensible part of the frame (something is visible, not everything).
+TEST_F(Cli, EveryShippedSceneRendersWithSensibleCoverage) {
+    int scenes = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(ZEROSET_SOURCE_DIR "/scenes")) {
+        if (entry.path().extension() != ".zs") continue;
+        ++scenes;
+        const Outcome r = run("render -q '" + entry.path().string() + "' -o shot.png --width 64 --height 48");
+        ASSERT_EQ(r.status, 0) << entry.path() << "\n" << r.err;
+        const double c = coverage(zeroset::read_png(dir_ / "shot.png"));
+        EXPECT_GT(c, 0.03) << entry.path();
+        EXPECT_LT(c, 0.97) << entry.path();
+    }
+    EXPECT_GE(scenes, 5);
+}
+
+}  // namespace
