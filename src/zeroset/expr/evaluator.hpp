@@ -38,6 +38,10 @@ public:
 
     [[nodiscard]] const Tape& tape() const { return *tape_; }
 
+    /// Switches to another tape over the same slots and constants — one
+    /// pruned from this evaluator's original tape (expr/tape_pruner.hpp).
+    void rebind(const Tape& pruned) { tape_ = &pruned; }
+
 private:
     const Tape* tape_;
     std::vector<T> slots_;

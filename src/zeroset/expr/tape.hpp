@@ -1,9 +1,12 @@
 // Tape: an expression compiled to a flat, topologically ordered list of
 // clauses {op, out, a, b} over numbered slots — the form every evaluator walks.
 // Slots 0, 1, 2 hold x, y, z; then one slot per distinct constant (loaded once,
-// never overwritten); then working slots, reused once their value is dead
-// (linear-scan register allocation), so a 10 000-clause model needs only a
-// few hundred slots and stays in cache.
+// never overwritten); then working slots. With SlotLayout::Reuse a slot is
+// reused once its value is dead (linear-scan register allocation), so a
+// 10 000-clause model needs only a few hundred slots and stays in cache. With
+// SlotLayout::OnePerValue every value keeps its own slot, which is what tape
+// pruning needs (expr/tape_pruner.hpp). Either way a clause's output slot
+// never aliases one of its operands (the batch evaluator relies on that).
 #pragma once
 
 #include <cstdint>
@@ -22,11 +25,15 @@ struct Clause {
     std::uint32_t b;  // second operand slot; for Powi the exponent (as int)
 };
 
+enum class SlotLayout { Reuse, OnePerValue };
+
 class Tape {
 public:
     static constexpr std::uint32_t slot_x = 0, slot_y = 1, slot_z = 2;
 
-    explicit Tape(const Expr& root);
+    explicit Tape(const Expr& root, SlotLayout layout = SlotLayout::Reuse);
+    /// An empty tape, to be filled by TapePruner.
+    Tape() = default;
 
     [[nodiscard]] const std::vector<Clause>& clauses() const { return clauses_; }
     [[nodiscard]] const std::vector<std::pair<std::uint32_t, double>>& constants() const { return constants_; }
@@ -36,6 +43,8 @@ public:
     [[nodiscard]] bool is_polynomial() const;
 
 private:
+    friend class TapePruner;
+
     std::vector<Clause> clauses_;
     std::vector<std::pair<std::uint32_t, double>> constants_;
     std::uint32_t slot_count_ = 3;

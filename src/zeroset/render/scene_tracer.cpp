@@ -17,7 +17,7 @@ PreparedScene::PreparedScene(const Scene& scene) : scene_(&scene), lights_(scene
     if (lights_.empty()) lights_.push_back({Light::Kind::Point, scene.camera.from, {}, {1.0, 1.0, 1.0}, true});
     objects_.reserve(scene.objects.size());
     for (const Object& object : scene.objects) {
-        Tape tape(object.surface);
+        Tape tape(object.surface, SlotLayout::OnePerValue);
         const Box3 box = object.bounds.enclosing_box();
         Evaluator<Dual<Interval>> gradient(tape);
         const double lipschitz = lipschitz_bound(gradient, box).constant;

@@ -1,4 +1,5 @@
-// Sphere tracing with per-segment Lipschitz bounds (see sphere_tracer.hpp).
+// Sphere tracing with per-segment Lipschitz bounds and pruned tapes (see
+// sphere_tracer.hpp).
 #include "zeroset/trace/sphere_tracer.hpp"
 
 #include <array>
@@ -8,31 +9,40 @@ namespace zeroset {
 
 namespace {
 
+constexpr std::size_t max_depth = 128;
+
+struct Segment {
+    double a, b;
+    std::size_t depth;  // number of splits above it; its parent's tape is pruned_[depth - 1]
+};
+
 /// Segments waiting to be marched, front of the ray on top. Splitting pushes
-/// two halves for one popped segment, so the depth grows by one per halving;
-/// a segment is split only while the stack has room (otherwise it is simply
-/// marched with the bound it has, which is still safe).
+/// two halves for one popped segment, so the stack grows by one per level;
+/// a segment is split only while depth and stack have room (otherwise it is
+/// simply marched with the bound it has, which is still safe).
 class SegmentStack {
 public:
-    void push(double a, double b) { items_[size_++] = {a, b}; }
-    [[nodiscard]] bool has_room_for_split() const { return size_ + 2 <= items_.size(); }
+    void push(double a, double b, std::size_t depth) { items_[size_++] = {a, b, depth}; }
+    [[nodiscard]] bool can_split(const Segment& s) const {
+        return size_ + 2 <= items_.size() && s.depth + 1 < max_depth;
+    }
     [[nodiscard]] bool empty() const { return size_ == 0; }
-    Span pop() { return items_[--size_]; }
+    Segment pop() { return items_[--size_]; }
 
 private:
-    std::array<Span, 128> items_{};
+    std::array<Segment, max_depth + 2> items_{};
     std::size_t size_ = 0;
 };
+
+Box3 segment_box(const Ray& ray, double a, double b) {
+    const Vec3d pa = ray.at(a), pb = ray.at(b);
+    return {min(pa, pb), max(pa, pb)};
+}
 
 }  // namespace
 
 SphereTracer::SphereTracer(const Tape& tape, SphereTraceSettings settings)
-    : settings_(settings), point_(tape), range_(tape), slope_(tape) {}
-
-Box3 SphereTracer::segment_box(const Ray& ray, double a, double b) {
-    const Vec3d pa = ray.at(a), pb = ray.at(b);
-    return {min(pa, pb), max(pa, pb)};
-}
+    : settings_(settings), tape_(&tape), pruner_(tape), pruned_(max_depth), point_(tape), slope_(tape) {}
 
 double SphereTracer::value_at(const Ray& ray, double t, TraceCounters& counters) {
     const Vec3d p = ray.at(t);
@@ -48,30 +58,37 @@ double SphereTracer::value_at(const Ray& ray, double t, TraceCounters& counters)
 std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCounters& counters) {
     const double eps = settings_.epsilon;
     SegmentStack segments;
-    segments.push(span.t0, span.t1);
+    segments.push(span.t0, span.t1, 0);
     while (!segments.empty()) {
-        const auto [a, b] = segments.pop();
-        const Box3 box = segment_box(ray, a, b);
+        const Segment segment = segments.pop();
+        const auto [a, b, depth] = segment;
+        const auto split = [&](double from) {
+            const double mid = 0.5 * (from + b);
+            segments.push(mid, b, depth + 1);
+            segments.push(from, mid, depth + 1);
+        };
 
-        // Fig. 9, step 2: no root where the enclosure of f excludes 0. Plain
-        // intervals first: far cheaper than the gradient, and most segments stop here.
+        // Fig. 9, step 2 — and the tape pruned to this segment. The box
+        // reaches 2ε past b, where a hit is confirmed (below).
         ++counters.interval_evaluations;
-        const Interval value = evaluate_box(range_, box.lo, box.hi);
+        const Tape& parent = depth == 0 ? *tape_ : pruned_[depth - 1];
+        Tape& tape = pruned_[depth];
+        const Interval value = pruner_.prune(parent, segment_box(ray, a, b + 2.0 * eps), tape);
         if (value.is_empty()) {  // f is undefined (NaN) all over this segment
             ++counters.nan_evaluations;
             last_nan_point_ = ray.at(0.5 * (a + b));
             return std::nullopt;
         }
         if (value.lo > 0.0) continue;
+        point_.rebind(tape);
+        slope_.rebind(tape);
 
         ++counters.gradient_evaluations;
-        const double lipschitz = lipschitz_bound(slope_, box).constant;
-        const bool splittable = b - a > 2.0 * eps && segments.has_room_for_split();
+        const double lipschitz = lipschitz_bound(slope_, segment_box(ray, a, b)).constant;
+        const bool splittable = b - a > 2.0 * eps && segments.can_split(segment);
         if (!std::isfinite(lipschitz)) {
             if (splittable) {
-                const double mid = 0.5 * (a + b);
-                segments.push(mid, b);
-                segments.push(a, mid);
+                split(a);
                 continue;
             }
             // An ε-segment whose slope has no finite bound (e.g. sqrt at 0):
@@ -97,10 +114,8 @@ std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCo
                 const double h_ahead = value_at(ray, ahead, counters);
                 if (std::isnan(h_ahead)) return std::nullopt;
                 if (h_ahead <= 0.0) return t;
-                if (b - ahead > 2.0 * eps && segments.has_room_for_split()) {
-                    const double mid = 0.5 * (ahead + b);
-                    segments.push(mid, b);
-                    segments.push(ahead, mid);
+                if (b - ahead > 2.0 * eps && segments.can_split(segment)) {
+                    split(ahead);
                     break;
                 }
                 t = ahead;  // an ε-segment positive at both ends: at most a sub-ε graze
@@ -109,10 +124,8 @@ std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCo
             }
             t += h / lipschitz;  // D(t) = H(t) / Lip H
             if (t >= b) break;   // this segment is clear
-            if (steps >= settings_.steps_before_split && b - t > 2.0 * eps && segments.has_room_for_split()) {
-                const double mid = 0.5 * (t + b);
-                segments.push(mid, b);
-                segments.push(t, mid);
+            if (steps >= settings_.steps_before_split && b - t > 2.0 * eps && segments.can_split(segment)) {
+                split(t);
                 break;
             }
         }

@@ -4,17 +4,28 @@
 //
 // L is never a user parameter. It is the interval enclosure of ∇f over the
 // axis-aligned box around the ray segment being marched (expr/lipschitz.hpp).
-// The object's whole bounds give the first segment; a segment whose bound is
-// infinite or loose (many steps without a hit) is split in two and each half
-// gets its own, tighter L. A segment over which the interval enclosure of f
-// is positive holds no surface and is skipped whole (Fig. 9, step 2).
-// Every step is therefore safe: the first hit is never stepped over.
+// The span inside the object's bounds is the first segment; a segment whose
+// bound is infinite or loose (many steps without a hit) is split in two and
+// each half gets its own, tighter L. On every segment:
+//   - the interval enclosure of f decides first: a segment where f > 0 holds
+//     no surface and is skipped whole (Fig. 9, step 2); one where f is
+//     undefined everywhere is a NaN error;
+//   - the tape is pruned to the clauses live in the segment's box
+//     (expr/tape_pruner.hpp), and the halves of a split segment prune their
+//     parent's tape further, so deep in a CSG model a step walks a few clauses;
+//   - a hit is reported only where the distance bound drops below ε and f
+//     changes sign within 2ε ahead.
+// Every step stays in a segment whose L holds, so the first hit is never
+// stepped over; every step or split makes progress of at least ε, so the
+// march always ends.
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/lipschitz.hpp"
+#include "zeroset/expr/tape_pruner.hpp"
 #include "zeroset/math/box3.hpp"
 #include "zeroset/trace/trace_counters.hpp"
 
@@ -29,6 +40,7 @@ struct SphereTraceSettings {
 
 class SphereTracer {
 public:
+    /// `tape` must use SlotLayout::OnePerValue (it is pruned per segment).
     SphereTracer(const Tape& tape, SphereTraceSettings settings);
 
     /// The smallest t in span at which the ray (unit direction) meets the
@@ -40,14 +52,15 @@ public:
     [[nodiscard]] const Vec3d& last_nan_point() const { return last_nan_point_; }
 
 private:
-    static Box3 segment_box(const Ray& ray, double a, double b);
-    /// f at ray.at(t); a NaN is counted and its point remembered.
+    /// f at ray.at(t) on the current pruned tape; a NaN is counted and its point remembered.
     double value_at(const Ray& ray, double t, TraceCounters& counters);
 
     SphereTraceSettings settings_;
+    const Tape* tape_;
+    TapePruner pruner_;
+    std::vector<Tape> pruned_;  // pruned_[d]: the tape of the segment being marched at split depth d
     Evaluator<double> point_;
-    Evaluator<Interval> range_;           // f over a box
-    Evaluator<Dual<Interval>> slope_;     // f and ∇f over a box
+    Evaluator<Dual<Interval>> slope_;  // f and ∇f over a box
     Vec3d last_nan_point_{};
 };
 

@@ -1,0 +1,95 @@
+// Tape pruning: inside the box the pruned tape computes exactly what the full
+// tape computes, with fewer clauses wherever a min/max side wins outright.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+
+#include "zeroset/expr/evaluator.hpp"
+#include "zeroset/expr/tape_pruner.hpp"
+#include "zeroset/expr/vm_import.hpp"
+
+namespace zeroset {
+namespace {
+
+Expr ball(double cx, double r) {
+    return sqrt(square(var_x() - cx) + square(var_y()) + square(var_z())) - r;
+}
+
+/// Checks that `pruned` agrees bit for bit with `full` at random points in the box.
+void expect_same_inside(const Tape& full, const Tape& pruned, const Box3& box, int samples = 200) {
+    Evaluator<double> f(full), g(full);
+    g.rebind(pruned);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int i = 0; i < samples; ++i) {
+        const Vec3d p{box.lo.x + u(rng) * (box.hi.x - box.lo.x), box.lo.y + u(rng) * (box.hi.y - box.lo.y),
+                      box.lo.z + u(rng) * (box.hi.z - box.lo.z)};
+        ASSERT_EQ(f(p.x, p.y, p.z), g(p.x, p.y, p.z)) << p.x << " " << p.y << " " << p.z;
+    }
+}
+
+TEST(TapePruner, UnionOfDistantBallsKeepsOnlyTheNearOne) {
+    const Tape full(min(ball(-5, 1), ball(5, 1)), SlotLayout::OnePerValue);
+    TapePruner pruner(full);
+    Tape pruned;
+    const Box3 near_left{{-6, -1, -1}, {-4, 1, 1}};
+    const Interval value = pruner.prune(full, near_left, pruned);
+    EXPECT_LE(value.lo, 0.0);
+    // Each ball is 6 clauses, y² and z² are shared (2), plus the min: 15 → 8.
+    EXPECT_EQ(full.clauses().size(), 15u);
+    EXPECT_EQ(pruned.clauses().size(), 8u);
+    for (const Clause& c : pruned.clauses()) EXPECT_NE(c.op, Op::Min);
+    expect_same_inside(full, pruned, near_left);
+}
+
+TEST(TapePruner, AmbiguousBoxKeepsBothSides) {
+    const Tape full(min(ball(-1, 1), ball(1, 1)), SlotLayout::OnePerValue);
+    TapePruner pruner(full);
+    Tape pruned;
+    const Box3 middle{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}};
+    pruner.prune(full, middle, pruned);
+    EXPECT_EQ(pruned.clauses().size(), full.clauses().size());
+    expect_same_inside(full, pruned, middle);
+}
+
+TEST(TapePruner, PruningAPrunedTapeNarrowsFurther) {
+    const Expr three = min(min(ball(-4, 1), ball(0, 1)), ball(4, 1));
+    const Tape full(three, SlotLayout::OnePerValue);
+    TapePruner pruner(full);
+    Tape wide, narrow;
+    // Over `wide` the right ball loses to the other two; over `narrow` the
+    // middle ball also beats the left one.
+    const Box3 wide_box{{-2.5, -0.3, -0.3}, {0.5, 0.3, 0.3}};
+    const Box3 narrow_box{{-0.5, -0.3, -0.3}, {0.5, 0.3, 0.3}};
+    pruner.prune(full, wide_box, wide);
+    pruner.prune(wide, narrow_box, narrow);
+    EXPECT_LT(wide.clauses().size(), full.clauses().size());
+    EXPECT_LT(narrow.clauses().size(), wide.clauses().size());
+    expect_same_inside(full, wide, wide_box);
+    expect_same_inside(full, narrow, narrow_box);
+}
+
+TEST(TapePruner, BearStaysExactAndShrinksInSmallBoxes) {
+    std::ifstream in(ZEROSET_MODELS_DIR "/bear.vm");
+    const Tape full(import_vm(in), SlotLayout::OnePerValue);
+    TapePruner pruner(full);
+    Tape pruned;
+    std::size_t total = 0;
+    int boxes = 0;
+    for (double x = -0.6; x < 0.9; x += 0.3) {
+        for (double y = -0.5; y < 0.8; y += 0.3) {
+            const Box3 box{{x, y, 0.0}, {x + 0.05, y + 0.05, 0.05}};
+            pruner.prune(full, box, pruned);
+            total += pruned.clauses().size();
+            ++boxes;
+            expect_same_inside(full, pruned, box, 20);
+        }
+    }
+    // bear is mostly smooth blends (27 of 543 clauses are min/max), so small
+    // boxes drop only part of it.
+    EXPECT_LT(total / static_cast<std::size_t>(boxes), full.clauses().size() * 9 / 10);
+}
+
+}  // namespace
+}  // namespace zeroset
