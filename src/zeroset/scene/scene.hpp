@@ -1,5 +1,5 @@
 // Scene: what to render — camera, lights, background, image settings and the
-// implicit objects. Built by the scene-language parser (scene/parser.hpp) or
+// implicit objects. Built by the scene-language parser (scene/load_scene.hpp) or
 // directly in C++; consumed by the renderer.
 #pragma once
 

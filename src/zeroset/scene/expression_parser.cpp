@@ -1,0 +1,286 @@
+// Recursive descent over the expression grammar (docs/scene-language.md):
+//
+//   expression := term (('+' | '-') term)*
+//   term       := unary (('*' | '/') unary)*
+//   unary      := ('-' | '+') unary | power
+//   power      := primary ('^' unary)?          right-associative, above unary minus
+//   primary    := NUMBER | NAME | NAME '(' arguments ')' | '(' expression ')'
+//               | '(' expression ',' expression ',' expression ')'
+#include "zeroset/scene/expression_parser.hpp"
+
+#include <algorithm>
+#include <array>
+#include <numbers>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "zeroset/scene/file_text.hpp"
+#include "zeroset/scene/wording.hpp"
+
+namespace zeroset {
+
+namespace {
+
+struct Function {
+    std::string_view name;
+    int min_args;
+    int max_args;  // -1: no upper limit
+    Expr (*apply)(std::span<const Expr> args);
+};
+
+Expr fold_min(std::span<const Expr> args) {
+    Expr result = args[0];
+    for (const Expr& a : args.subspan(1)) result = min(result, a);
+    return result;
+}
+
+Expr fold_max(std::span<const Expr> args) {
+    Expr result = args[0];
+    for (const Expr& a : args.subspan(1)) result = max(result, a);
+    return result;
+}
+
+constexpr std::array<Function, 11> functions{{
+    {"sqrt", 1, 1, [](std::span<const Expr> a) { return sqrt(a[0]); }},
+    {"abs", 1, 1, [](std::span<const Expr> a) { return abs(a[0]); }},
+    {"exp", 1, 1, [](std::span<const Expr> a) { return exp(a[0]); }},
+    {"log", 1, 1, [](std::span<const Expr> a) { return log(a[0]); }},
+    {"ln", 1, 1, [](std::span<const Expr> a) { return log(a[0]); }},
+    {"sin", 1, 1, [](std::span<const Expr> a) { return sin(a[0]); }},
+    {"cos", 1, 1, [](std::span<const Expr> a) { return cos(a[0]); }},
+    {"square", 1, 1, [](std::span<const Expr> a) { return square(a[0]); }},
+    {"pow", 2, 2, [](std::span<const Expr> a) { return pow(a[0], a[1]); }},
+    {"min", 2, -1, fold_min},
+    {"max", 2, -1, fold_max},
+}};
+
+constexpr std::string_view model_function = "model";
+
+/// The names that stand for values: x, y, z and pi.
+std::optional<Expr> builtin_value(std::string_view name) {
+    if (name == "x") return var_x();
+    if (name == "y") return var_y();
+    if (name == "z") return var_z();
+    if (name == "pi") return Expr(std::numbers::pi);
+    return std::nullopt;
+}
+
+const Function* find_function(std::string_view name) {
+    const auto it = std::ranges::find(functions, name, &Function::name);
+    return it == functions.end() ? nullptr : &*it;
+}
+
+std::string plural(std::size_t n, std::string_view word) {
+    return std::to_string(n) + " " + std::string(word) + (n == 1 ? "" : "s");
+}
+
+/// Parentheses, calls, unary signs and exponents each nest one level deeper;
+/// past this many levels the text is rejected rather than overflowing the stack.
+constexpr int max_nesting = 1000;
+
+class ExpressionParser {
+public:
+    ExpressionParser(TokenStream& in, const ExpressionContext& context) : in_(in), context_(context) {}
+
+    Value expression() {
+        Value left = term();
+        while (in_.at(TokenKind::Plus) || in_.at(TokenKind::Minus)) {
+            const Token& op = in_.next();
+            left = combine(op, left, term());
+        }
+        return left;
+    }
+
+private:
+    /// Counts one level of nesting for as long as it lives.
+    class Nesting {
+    public:
+        Nesting(ExpressionParser& parser, const Token& at) : parser_(parser) {
+            if (++parser_.depth_ > max_nesting)
+                parser_.in_.fail(at.where, "expression nested too deeply (more than " + std::to_string(max_nesting) +
+                                               " levels)");
+        }
+        ~Nesting() { --parser_.depth_; }
+        Nesting(const Nesting&) = delete;
+        Nesting& operator=(const Nesting&) = delete;
+
+    private:
+        ExpressionParser& parser_;
+    };
+
+    Value term() {
+        Value left = unary();
+        while (in_.at(TokenKind::Star) || in_.at(TokenKind::Slash)) {
+            const Token& op = in_.next();
+            left = combine(op, left, unary());
+        }
+        return left;
+    }
+
+    Value unary() {
+        if (!in_.at(TokenKind::Minus) && !in_.at(TokenKind::Plus)) return power();
+        const Token& sign = in_.next();
+        const Nesting nesting(*this, sign);
+        Value operand = unary();
+        if (sign.kind == TokenKind::Plus) return operand;
+        if (!operand.is_vector()) return -operand.number();
+        const ExprVector& v = operand.vector();
+        return ExprVector{-v[0], -v[1], -v[2]};
+    }
+
+    Value power() {
+        Value base = primary();
+        if (!in_.at(TokenKind::Caret)) return base;
+        const Token& op = in_.next();
+        const Nesting nesting(*this, op);
+        return combine(op, base, unary());
+    }
+
+    Value primary() {
+        const Token& token = in_.peek();
+        switch (token.kind) {
+            case TokenKind::Number: in_.next(); return Expr(token.number);
+            case TokenKind::Name:
+                in_.next();
+                return in_.at(TokenKind::LeftParen) ? call(token) : name(token);
+            case TokenKind::LeftParen: return parenthesised();
+            default: in_.fail_expected("an expression");
+        }
+    }
+
+    Value name(const Token& token) {
+        const std::string_view text = token.text;
+        if (const auto value = builtin_value(text)) return *value;
+        if (const Binding* binding = context_.scope.find(text)) return binding->value;
+        if (find_function(text) || text == model_function)
+            in_.fail(token.where, "'" + std::string(text) + "' is a function: call it as " + std::string(text) + "(...)");
+        in_.fail(token.where, "unknown identifier '" + std::string(text) + "'");
+    }
+
+    /// A parenthesised expression, or a vector (a, b, c).
+    Value parenthesised() {
+        const Token& open = in_.next();
+        const Nesting nesting(*this, open);
+        std::vector<Value> items;
+        std::vector<SourceLocation> starts;
+        do {
+            starts.push_back(in_.peek().where);
+            items.push_back(expression());
+        } while (in_.accept(TokenKind::Comma));
+        if (!in_.accept(TokenKind::RightParen)) in_.fail_expected(items.size() == 1 ? "')'" : "',' or ')'");
+        if (items.size() == 1) return items.front();
+        if (items.size() != 3)
+            in_.fail(open.where, "a vector has 3 components, but this one has " + std::to_string(items.size()));
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            if (items[i].is_vector())
+                in_.fail(starts[i], "a vector's components must be numbers, but component " + std::to_string(i + 1) +
+                                        " is a vector");
+        }
+        return ExprVector{items[0].number(), items[1].number(), items[2].number()};
+    }
+
+    Value call(const Token& name) {
+        if (name.text == model_function) return model(name);
+        const Function* function = find_function(name.text);
+        if (!function) {
+            const bool is_value = context_.scope.find(name.text) || builtin_value(name.text);
+            in_.fail(name.where, is_value ? "'" + std::string(name.text) + "' is not a function"
+                                          : "unknown function '" + std::string(name.text) + "'");
+        }
+        const Nesting nesting(*this, name);
+        in_.next();  // '('
+        std::vector<Expr> args;
+        if (!in_.accept(TokenKind::RightParen)) {
+            do {
+                const SourceLocation start = in_.peek().where;
+                const Value arg = expression();
+                if (arg.is_vector())
+                    in_.fail(start, std::string(name.text) + " takes numbers, but argument " +
+                                        std::to_string(args.size() + 1) + " is a vector");
+                args.push_back(arg.number());
+            } while (in_.accept(TokenKind::Comma));
+            if (!in_.accept(TokenKind::RightParen)) in_.fail_expected("',' or ')'");
+        }
+        const auto count = static_cast<int>(args.size());
+        if (count < function->min_args || (function->max_args >= 0 && count > function->max_args)) {
+            const std::string takes = function->min_args == function->max_args ? "takes " : "takes at least ";
+            in_.fail(name.where, std::string(name.text) + " " + takes +
+                                     plural(static_cast<std::size_t>(function->min_args), "argument") + ", but " +
+                                     std::to_string(count) + (count == 1 ? " was" : " were") + " given");
+        }
+        return function->apply(args);
+    }
+
+    /// model("file.vm"): a fidget .vm model, its path relative to this scene file.
+    Value model(const Token& name) {
+        in_.next();  // '('
+        if (!in_.at(TokenKind::String)) in_.fail_expected("a file name in quotes, as in model(\"bear.vm\"),");
+        const Token& file = in_.next();
+        in_.expect(TokenKind::RightParen);
+        const std::filesystem::path path = resolve_path(context_.base_dir, file.text);
+        try {
+            return context_.models.load(path, path.string());
+        } catch (const FileReadError& e) {
+            in_.fail(name.where, "cannot open model '" + path.string() + "': " + e.what());
+        }
+    }
+
+    /// a op b for the binary operators, on numbers and, where it means something, vectors.
+    Value combine(const Token& op, const Value& a, const Value& b) {
+        if (!a.is_vector() && !b.is_vector()) {
+            const Expr& p = a.number();
+            const Expr& q = b.number();
+            switch (op.kind) {
+                case TokenKind::Plus: return p + q;
+                case TokenKind::Minus: return p - q;
+                case TokenKind::Star: return p * q;
+                case TokenKind::Slash: return p / q;
+                default: return pow(p, q);  // '^'; an integer constant exponent makes powi
+            }
+        }
+        const auto each = [](const ExprVector& u, auto f) { return ExprVector{f(u[0], 0), f(u[1], 1), f(u[2], 2)}; };
+        switch (op.kind) {
+            case TokenKind::Plus:
+            case TokenKind::Minus:
+                if (a.is_vector() && b.is_vector()) {
+                    const ExprVector& v = b.vector();
+                    const bool plus = op.kind == TokenKind::Plus;
+                    return each(a.vector(), [&](const Expr& u, int i) { return plus ? u + v[i] : u - v[i]; });
+                }
+                break;
+            case TokenKind::Star:
+                if (a.is_vector() != b.is_vector()) {
+                    const Expr& s = a.is_vector() ? b.number() : a.number();
+                    return each(a.is_vector() ? a.vector() : b.vector(), [&](const Expr& u, int) { return u * s; });
+                }
+                break;
+            case TokenKind::Slash:
+                if (a.is_vector() && !b.is_vector())
+                    return each(a.vector(), [&](const Expr& u, int) { return u / b.number(); });
+                break;
+            default: break;
+        }
+        const std::string operands = a.is_vector() && b.is_vector()
+                                         ? "two vectors"
+                                         : std::string(a.kind_name()) + " and " + std::string(b.kind_name());
+        in_.fail(op.where, "cannot apply '" + std::string(op.text) + "' to " + operands);
+    }
+
+    TokenStream& in_;
+    const ExpressionContext& context_;
+    int depth_ = 0;
+};
+
+}  // namespace
+
+Value parse_expression(TokenStream& in, const ExpressionContext& context) {
+    return ExpressionParser(in, context).expression();
+}
+
+bool is_builtin_name(std::string_view name) {
+    return builtin_value(name) || name == model_function || find_function(name) != nullptr;
+}
+
+}  // namespace zeroset

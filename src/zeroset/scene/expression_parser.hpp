@@ -1,0 +1,32 @@
+// The expression half of the scene language: numbers, x, y, z, pi, names
+// bound by `let`, + - * / ^, function calls, model("file.vm") and vectors
+// (a, b, c). Expressions are built into Values while they are read, so an
+// unknown name, a wrong argument count or a vector where a number belongs
+// is reported at parse time, at the token that caused it.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+#include "zeroset/scene/model_library.hpp"
+#include "zeroset/scene/scope.hpp"
+#include "zeroset/scene/token_stream.hpp"
+#include "zeroset/scene/value.hpp"
+
+namespace zeroset {
+
+/// What an expression can refer to besides its own text.
+struct ExpressionContext {
+    const Scope& scope;
+    ModelLibrary& models;
+    const std::filesystem::path& base_dir;  // model paths are relative to it
+};
+
+/// Reads one expression from `in`; stops at the first token that cannot continue it.
+Value parse_expression(TokenStream& in, const ExpressionContext& context);
+
+/// True for the names the language defines itself (x, y, z, pi and the
+/// function names), which `let` may not bind.
+bool is_builtin_name(std::string_view name);
+
+}  // namespace zeroset

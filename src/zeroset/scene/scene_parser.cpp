@@ -1,0 +1,368 @@
+// The statements and blocks of the scene language (docs/scene-language.md).
+#include "zeroset/scene/scene_parser.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+#include "zeroset/scene/constant_value.hpp"
+#include "zeroset/scene/expression_parser.hpp"
+#include "zeroset/scene/file_text.hpp"
+#include "zeroset/scene/wording.hpp"
+
+namespace zeroset {
+
+namespace {
+
+constexpr std::array<std::string_view, 8> statement_names{"image",   "camera", "light",   "background",
+                                                          "ambient", "let",    "include", "object"};
+constexpr std::array<std::string_view, 3> image_keys{"width", "height", "spp"};
+constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};
+constexpr std::array<std::string_view, 4> light_keys{"from", "direction", "color", "shadows"};
+constexpr std::array<std::string_view, 5> object_keys{"surface", "bounds", "method", "normals", "material"};
+constexpr std::array<std::string_view, 5> material_keys{"color", "ambient", "diffuse", "specular", "shininess"};
+
+constexpr int max_image_size = 65536;
+constexpr int max_samples_per_pixel = 1024;
+
+bool contains(std::span<const std::string_view> names, std::string_view name) {
+    return std::ranges::find(names, name) != names.end();
+}
+
+std::string line_and_column(SourceLocation where) {
+    return "line " + std::to_string(where.line) + ", column " + std::to_string(where.column);
+}
+
+/// The names method_from_name() accepts. method.hpp keeps no list of them;
+/// method_name() answers "?" past the last enumerator, which ends the walk.
+std::vector<std::string_view> method_names() {
+    std::vector<std::string_view> names;
+    for (int i = 0; i < 64; ++i) {
+        const std::string_view name = method_name(static_cast<Method>(i));
+        if (name == "?") break;
+        names.push_back(name);
+    }
+    return names;
+}
+
+}  // namespace
+
+void SceneParser::parse(std::string file_name, std::string text, const std::filesystem::path& base_dir,
+                        const std::filesystem::path& source) {
+    TokenStream in(std::move(file_name), std::move(text));
+    if (!source.empty()) {
+        open_files_.push_back({source, in.file_name()});
+        included_.insert(source);
+    }
+    TokenStream* const outer = in_;
+    std::filesystem::path outer_dir = std::exchange(dir_, base_dir);
+    in_ = &in;
+    while (!in.at(TokenKind::End)) statement();
+    in_ = outer;
+    dir_ = std::move(outer_dir);
+    if (!source.empty()) open_files_.pop_back();
+}
+
+void SceneParser::statement() {
+    const Token& keyword = in_->peek();
+    if (keyword.kind != TokenKind::Name || !contains(statement_names, keyword.text)) {
+        std::string message = "expected a statement (" + join_words(statement_names, "or") + ") but found " +
+                              describe(keyword);
+        if (keyword.kind == TokenKind::Name && in_->peek(1).kind == TokenKind::Equals)
+            message += "; to bind a name, write: let " + std::string(keyword.text) + " = ...";
+        in_->fail(keyword.where, message);
+    }
+    in_->next();
+    const std::string_view name = keyword.text;
+    if (name == "image") {
+        image(keyword);
+    } else if (name == "camera") {
+        camera(keyword);
+    } else if (name == "light") {
+        light(keyword);
+    } else if (name == "background") {
+        once(background_at_, keyword, "a background");
+        scene_.background = color("the background color");
+    } else if (name == "ambient") {
+        once(ambient_at_, keyword, "an ambient light");
+        scene_.ambient = color("the ambient light color");
+    } else if (name == "let") {
+        let();
+    } else if (name == "include") {
+        include(keyword);
+    } else {
+        object(keyword);
+    }
+}
+
+void SceneParser::image(const Token& keyword) {
+    once(image_at_, keyword, "an image block");
+    ImageSettings& image = scene_.image;
+    block(keyword, image_keys, [&](const Token& key) {
+        if (key.text == "width") {
+            image.width = count("width", max_image_size);
+        } else if (key.text == "height") {
+            image.height = count("height", max_image_size);
+        } else {
+            image.samples_per_pixel = count("spp", max_samples_per_pixel);
+        }
+    });
+}
+
+void SceneParser::camera(const Token& keyword) {
+    once(camera_at_, keyword, "a camera block");
+    Camera& camera = scene_.camera;
+    block(keyword, camera_keys, [&](const Token& key) {
+        if (key.text == "from") {
+            camera.from = vector("the camera position").value;
+        } else if (key.text == "at") {
+            camera.at = vector("the camera target").value;
+        } else if (key.text == "up") {
+            camera.up = vector("the camera up vector").value;
+        } else {
+            const auto [fov, where] = number("fov");
+            if (!(fov > 0.0 && fov < 180.0))
+                in_->fail(where, "fov must be between 0 and 180 degrees, but it is " + format_number(fov));
+            camera.fov_degrees = fov;
+        }
+    });
+    const Vec3d view = camera.at - camera.from;
+    if (view == Vec3d{}) in_->fail(keyword.where, "the camera position and target must differ");
+    if (length(cross(view, camera.up)) <= 1e-9 * length(view) * length(camera.up))
+        in_->fail(keyword.where, "the camera up vector must be nonzero and not parallel to the view direction");
+}
+
+void SceneParser::light(const Token& keyword) {
+    Light light;
+    bool point = false;
+    bool directional = false;
+    block(keyword, light_keys, [&](const Token& key) {
+        if (key.text == "from") {
+            point = true;
+            light.kind = Light::Kind::Point;
+            light.position = vector("the light position").value;
+        } else if (key.text == "direction") {
+            directional = true;
+            const auto [direction, where] = vector("the light direction");
+            if (direction == Vec3d{}) in_->fail(where, "the light direction must not be zero");
+            light.kind = Light::Kind::Directional;
+            light.direction = normalize(direction);
+        } else if (key.text == "color") {
+            light.color = color("the light color");
+        } else {
+            light.casts_shadows = on_off("shadows");
+        }
+    });
+    if (point && directional)
+        in_->fail(keyword.where,
+                  "a light has either from (a point light) or direction (a directional light), not both");
+    if (!point && !directional)
+        in_->fail(keyword.where, "a light needs from (a point light) or direction (a directional light)");
+    scene_.lights.push_back(light);
+}
+
+void SceneParser::let() {
+    const Token& name = in_->expect(TokenKind::Name);
+    const std::string text(name.text);
+    if (is_builtin_name(text)) in_->fail(name.where, "'" + text + "' is a built-in name; let cannot bind it");
+    if (const Binding* earlier = scope_.find(text))
+        in_->fail(name.where, "'" + text + "' is already bound (at " + earlier->defined_at +
+                                  "); a name can be bound only once");
+    in_->expect(TokenKind::Equals);
+    scope_.define(text, {value().value, format_location(in_->file_name(), name.where)});
+}
+
+void SceneParser::include(const Token& keyword) {
+    const Token& written = in_->expect(TokenKind::String);
+    const std::filesystem::path path = resolve_path(dir_, written.text);
+    const std::filesystem::path canonical = canonical_path(path);
+    const auto open = std::ranges::find(open_files_, canonical, &OpenFile::canonical);
+    if (open != open_files_.end()) {
+        std::string chain;
+        for (auto it = open; it != open_files_.end(); ++it) chain += it->name + " -> ";
+        in_->fail(keyword.where, "include cycle: " + chain + path.string());
+    }
+    if (included_.contains(canonical)) return;  // each file is read once per scene
+    std::string text;
+    try {
+        text = read_text_file(path);
+    } catch (const FileReadError& e) {
+        in_->fail(keyword.where, "cannot open included file '" + path.string() + "': " + e.what());
+    }
+    parse(path.string(), std::move(text), path.parent_path(), canonical);
+}
+
+void SceneParser::object(const Token& keyword) {
+    Object object;
+    if (in_->at(TokenKind::String)) object.name = in_->next().text;
+    bool has_surface = false;
+    block(keyword, object_keys, [&](const Token& key) {
+        if (key.text == "surface") {
+            const auto [surface, where] = value();
+            if (surface.is_vector())
+                in_->fail(where, "the surface must be a number (an expression in x, y, z), but found a vector");
+            if (surface.number().is_constant_valued())
+                in_->fail(where, "the surface must depend on x, y or z, but it is the constant " +
+                                     format_number(surface.number().value()));
+            object.surface = surface.number();
+            has_surface = true;
+        } else if (key.text == "bounds") {
+            object.bounds = bounds();
+        } else if (key.text == "method") {
+            object.method = method();
+        } else if (key.text == "normals") {
+            object.normals = normal_mode();
+        } else {
+            object.material = material(key);
+        }
+    });
+    if (!has_surface) in_->fail(keyword.where, "an object needs a surface");
+    scene_.objects.push_back(std::move(object));
+}
+
+Material SceneParser::material(const Token& keyword) {
+    Material material;
+    block(keyword, material_keys, [&](const Token& key) {
+        if (key.text == "color") {
+            material.color = color("the material color");
+        } else if (key.text == "ambient") {
+            material.ambient = non_negative("ambient");
+        } else if (key.text == "diffuse") {
+            material.diffuse = non_negative("diffuse");
+        } else if (key.text == "specular") {
+            material.specular = non_negative("specular");
+        } else {
+            material.shininess = non_negative("shininess");
+        }
+    });
+    return material;
+}
+
+Bounds SceneParser::bounds() {
+    const Token& shape = in_->peek();
+    const bool is_box = shape.kind == TokenKind::Name && shape.text == "box";
+    const bool is_sphere = shape.kind == TokenKind::Name && shape.text == "sphere";
+    if (!is_box && !is_sphere) in_->fail_expected("box(lo, hi) or sphere(center, radius)");
+    in_->next();
+    in_->expect(TokenKind::LeftParen);
+    if (is_box) {
+        const auto [lo, where] = vector("box corner lo");
+        in_->expect(TokenKind::Comma);
+        const Vec3d hi = vector("box corner hi").value;
+        in_->expect(TokenKind::RightParen);
+        static constexpr std::array<std::string_view, 3> axes{"x", "y", "z"};
+        for (int i = 0; i < 3; ++i) {
+            if (!(lo[i] < hi[i])) {
+                const std::string axis(axes[static_cast<std::size_t>(i)]);
+                in_->fail(where, "box corner lo must be below hi in every coordinate, but lo." + axis + " = " +
+                                     format_number(lo[i]) + " is not below hi." + axis + " = " +
+                                     format_number(hi[i]));
+            }
+        }
+        return Bounds::make_box({lo, hi});
+    }
+    const Vec3d center = vector("the sphere center").value;
+    in_->expect(TokenKind::Comma);
+    const auto [radius, where] = number("the sphere radius");
+    in_->expect(TokenKind::RightParen);
+    if (!(radius > 0.0)) in_->fail(where, "sphere radius must be positive, but it is " + format_number(radius));
+    return Bounds::make_sphere(center, radius);
+}
+
+Method SceneParser::method() {
+    const std::vector<std::string_view> names = method_names();
+    const std::string expected = join_words(names, "or");
+    if (!in_->at(TokenKind::Name)) in_->fail_expected("a method (" + expected + ")");
+    const Token& name = in_->next();
+    if (const auto m = method_from_name(name.text)) return *m;
+    in_->fail(name.where, "unknown method '" + std::string(name.text) + "' (expected " + expected + ")");
+}
+
+NormalMode SceneParser::normal_mode() {
+    const std::array<std::string_view, 2> names{normal_mode_name(NormalMode::Analytic),
+                                                normal_mode_name(NormalMode::ForwardDifference)};
+    const std::string expected = join_words(names, "or");
+    if (!in_->at(TokenKind::Name)) in_->fail_expected("a normal mode (" + expected + ")");
+    const Token& name = in_->next();
+    if (const auto mode = normal_mode_from_name(name.text)) return *mode;
+    in_->fail(name.where, "unknown normal mode '" + std::string(name.text) + "' (expected " + expected + ")");
+}
+
+void SceneParser::block(const Token& keyword, std::span<const std::string_view> keys,
+                        const std::function<void(const Token& key)>& on_key) {
+    const std::string block_name(keyword.text);
+    const std::string expected_keys = join_words(keys, "or");
+    in_->expect(TokenKind::LeftBrace);
+    std::map<std::string_view, SourceLocation> seen;
+    while (!in_->accept(TokenKind::RightBrace)) {
+        const Token& key = in_->peek();
+        if (key.kind == TokenKind::End)
+            in_->fail(key.where, "expected '}' to close the " + block_name + " block opened at " +
+                                     line_and_column(keyword.where) + ", but found end of file");
+        if (key.kind != TokenKind::Name) in_->fail_expected("a key (" + expected_keys + ") or '}'");
+        if (!contains(keys, key.text))
+            in_->fail(key.where, "unknown key '" + std::string(key.text) + "' in the " + block_name +
+                                     " block (expected " + expected_keys + ")");
+        if (const auto first = seen.find(key.text); first != seen.end())
+            in_->fail(key.where, "'" + std::string(key.text) + "' is already set in this " + block_name +
+                                     " block (at " + line_and_column(first->second) + ")");
+        seen.emplace(key.text, key.where);
+        in_->next();
+        on_key(key);
+    }
+}
+
+void SceneParser::once(std::optional<std::string>& first, const Token& keyword, std::string_view what) {
+    if (first) in_->fail(keyword.where, "the scene already has " + std::string(what) + " (at " + *first + ")");
+    first = format_location(in_->file_name(), keyword.where);
+}
+
+SceneParser::Located<Value> SceneParser::value() {
+    const SourceLocation where = in_->peek().where;
+    return {parse_expression(*in_, {scope_, models_, dir_}), where};
+}
+
+SceneParser::Located<double> SceneParser::number(std::string_view what) {
+    const auto [v, where] = value();
+    return {constant_number(*in_, v, where, what), where};
+}
+
+SceneParser::Located<Vec3d> SceneParser::vector(std::string_view what) {
+    const auto [v, where] = value();
+    return {constant_vector(*in_, v, where, what), where};
+}
+
+double SceneParser::non_negative(std::string_view what) {
+    const auto [x, where] = number(what);
+    if (x < 0.0) in_->fail(where, std::string(what) + " must not be negative, but it is " + format_number(x));
+    return x;
+}
+
+Vec3d SceneParser::color(std::string_view what) {
+    const auto [c, where] = vector(what);
+    if (c.x < 0.0 || c.y < 0.0 || c.z < 0.0)
+        in_->fail(where, std::string(what) + " must not have negative components, but it is " + format_vector(c));
+    return c;
+}
+
+int SceneParser::count(std::string_view what, int max) {
+    const auto [n, where] = number(what);
+    if (n < 1.0 || n != std::floor(n))
+        in_->fail(where, std::string(what) + " must be a positive integer, but it is " + format_number(n));
+    if (n > max)
+        in_->fail(where, std::string(what) + " must be at most " + std::to_string(max) + ", but it is " +
+                             format_number(n));
+    return static_cast<int>(n);
+}
+
+bool SceneParser::on_off(std::string_view what) {
+    const Token& token = in_->peek();
+    if (token.kind == TokenKind::Name && (token.text == "on" || token.text == "off")) {
+        in_->next();
+        return token.text == "on";
+    }
+    in_->fail(token.where, std::string(what) + " must be on or off, but found " + describe(token));
+}
+
+}  // namespace zeroset
