@@ -132,3 +132,18 @@ TEST(Expr, UnusedNodesAreFreedAndRebuilt) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(ExprLifetime, DestroyingAVeryDeepChainDoesNotOverflowTheStack) {
+    {
+        Expr e = var_x();
+        for (int i = 0; i < 200000; ++i) e = sin(e) + Expr(static_cast<double>(i));
+        EXPECT_GT(e.node_count(), 200000u);
+    }  // destroyed here: recursion would need ~400 000 nested destructor frames
+    EXPECT_EQ(Expr(2.0) * var_x(), var_x() * Expr(2.0));  // the interning table still works afterwards
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -72,6 +72,23 @@ Expr Expr::intern(Op op, double value, int n, const Expr* a, const Expr* b) {
     return Expr(std::move(node));
 }
 
+ExprNode::~ExprNode() {
+    // Operands whose last owner is this node are queued instead of destroyed
+    // here; the outermost destructor on the thread drains the queue.
+    thread_local std::vector<std::shared_ptr<const ExprNode>> pending;
+    thread_local bool draining = false;
+    if (a) pending.push_back(std::move(a));
+    if (b) pending.push_back(std::move(b));
+    if (draining) return;
+    draining = true;
+    while (!pending.empty()) {
+        std::shared_ptr<const ExprNode> next = std::move(pending.back());
+        pending.pop_back();
+        next.reset();  // may run ~ExprNode, which only queues
+    }
+    draining = false;
+}
+
 Expr::Expr() : Expr(0.0) {}
 Expr::Expr(double constant) : node_(intern(Op::Const, constant, 0, nullptr, nullptr).node_) {}
 

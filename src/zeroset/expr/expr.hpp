@@ -62,6 +62,10 @@ struct ExprNode {
     double value;  // Const only
     bool constant_valued;
     std::shared_ptr<const ExprNode> a, b;  // operands (null past the arity)
+
+    /// Releases operands iteratively: a chain of 100 000 nodes must not
+    /// recurse 100 000 destructors deep.
+    ~ExprNode();
 };
 
 /// The coordinate variables.
