@@ -22,7 +22,8 @@ constexpr const char* render_usage = R"(Usage: zeroset render [SCENE] [options]
 
 Renders SCENE (a .zs file) to an image. Without SCENE, renders the built-in
 default scene: the survey's Figure 1, two unit spheres at (±1.2, 0, 0)
-blended as Blinn's blobs, h = 1 − e^(−f) − e^(−g) (eq. 12).
+blended as Blinn's blobs, h = 1 − e^(−f) − e^(−g) (eq. 12), over a floor
+(the text of scenes/hart1993/blinn_blobs.zs).
 
 Options:
   -o, --output FILE   the image to write; the format follows the extension:

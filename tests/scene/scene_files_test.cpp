@@ -41,7 +41,8 @@ TEST(SceneFiles, DefaultSceneIsTheBlinnBlobsFileWordForWord) {
 
 TEST(SceneFiles, DefaultSceneIsFigureOne) {
     const Scene s = default_scene();
-    ASSERT_EQ(s.objects.size(), 1U);
+    ASSERT_EQ(s.objects.size(), 2U);  // the blobs and the floor that catches their shadow
+    EXPECT_EQ(s.objects[0].name, "blobs");
     EXPECT_EQ(s.image.width, 800);
     EXPECT_EQ(s.image.height, 600);
     EXPECT_FALSE(s.lights.empty());
