@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "support/temp_dir.hpp"
 #include "zeroset/io/image_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -24,20 +25,12 @@ struct Outcome {
 
 class Cli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("zeroset-cli-" + std::to_string(::getpid()) + "-" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    /// Runs `zeroset ARGS` in the temp directory, capturing stderr.
+    /// Runs `zeroset ARGS` in the temp directory, capturing stderr (kept
+    /// outside it, so failures can be checked to leave nothing behind).
     Outcome run(const std::string& args) const {
-        const fs::path err = dir_ / "stderr.txt";
-        const std::string command =
-            "cd '" + dir_.string() + "' && '" ZEROSET_BINARY "' " + args + " > /dev/null 2> '" + err.string() + "'";
+        const fs::path err = logs_ / "stderr.txt";
+        const std::string command = "cd '" + dir_.path().string() + "' && '" ZEROSET_BINARY "' " + args +
+                                    " > /dev/null 2> '" + err.string() + "'";
         const int raw = std::system(command.c_str());
         std::ifstream in(err);
         std::stringstream text;
@@ -46,17 +39,13 @@ protected:
         return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
     }
 
-    fs::path write(const std::string& name, const std::string& text) const {
-        std::ofstream(dir_ / name) << text;
-        return dir_ / name;
-    }
+    fs::path write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
 
     /// Files in the temp directory (nothing may be left behind by a failure).
-    [[nodiscard]] std::size_t file_count() const {
-        return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
-    }
+    [[nodiscard]] std::size_t file_count() const { return dir_.entries().size(); }
 
-    fs::path dir_;
+    zeroset::test::TempDir dir_;
+    zeroset::test::TempDir logs_;
 };
 
 double coverage(const zeroset::Image& image) {

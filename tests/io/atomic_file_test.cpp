@@ -9,7 +9,7 @@
 
 #include <sys/resource.h>
 
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace zeroset {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "zeroset/io/image_reader.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace zeroset {
 namespace {

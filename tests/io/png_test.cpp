@@ -15,7 +15,7 @@
 #include "zeroset/io/image_reader.hpp"
 #include "zeroset/io/image_writer.hpp"
 #include "zeroset/io/srgb.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace zeroset {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "zeroset/io/image_writer.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace zeroset {
 namespace {

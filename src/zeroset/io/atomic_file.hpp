@@ -8,22 +8,16 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
-#include <stdexcept>
 #include <string>
+
+#include "zeroset/io/path_error.hpp"
 
 namespace zeroset {
 
 /// A file could not be written; the message is "<path>: <reason>".
-class FileWriteError : public std::runtime_error {
+class FileWriteError : public PathError {
 public:
-    FileWriteError(const std::filesystem::path& path, const std::string& reason)
-        : std::runtime_error(path.string() + ": " + reason), path_(path), reason_(reason) {}
-    [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-    [[nodiscard]] const std::string& reason() const { return reason_; }
-
-private:
-    std::filesystem::path path_;
-    std::string reason_;
+    using PathError::PathError;
 };
 
 /// One atomic write of `target`: construct (creates the temporary file),

@@ -3,24 +3,17 @@
 #pragma once
 
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 
+#include "zeroset/io/path_error.hpp"
 #include "zeroset/render/image.hpp"
 
 namespace zeroset {
 
 /// An image could not be read; the message is "<path>: <reason>".
-class ImageReadError : public std::runtime_error {
+class ImageReadError : public PathError {
 public:
-    ImageReadError(const std::filesystem::path& path, const std::string& reason)
-        : std::runtime_error(path.string() + ": " + reason), path_(path), reason_(reason) {}
-    [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-    [[nodiscard]] const std::string& reason() const { return reason_; }
-
-private:
-    std::filesystem::path path_;
-    std::string reason_;
+    using PathError::PathError;
 };
 
 /// Any PNG → linear RGB (samples treated as sRGB; alpha dropped).

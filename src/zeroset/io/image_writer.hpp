@@ -6,25 +6,18 @@
 
 #include <filesystem>
 #include <optional>
-#include <stdexcept>
 #include <string>
 
+#include "zeroset/io/path_error.hpp"
 #include "zeroset/render/image.hpp"
 
 namespace zeroset {
 
 /// An image could not be written; the message is "<path>: <reason>", e.g.
 /// "out.png: cannot create file: No such file or directory".
-class ImageWriteError : public std::runtime_error {
+class ImageWriteError : public PathError {
 public:
-    ImageWriteError(const std::filesystem::path& path, const std::string& reason)
-        : std::runtime_error(path.string() + ": " + reason), path_(path), reason_(reason) {}
-    [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-    [[nodiscard]] const std::string& reason() const { return reason_; }
-
-private:
-    std::filesystem::path path_;
-    std::string reason_;
+    using PathError::PathError;
 };
 
 enum class ImageFormat {

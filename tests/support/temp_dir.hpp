@@ -1,5 +1,5 @@
-// Test helpers for io/: a fresh directory per test (removed afterwards), a
-// directory listing to prove no stray files are left, and whole-file reads.
+// Test helpers shared by every suite: a fresh directory per test (removed
+// afterwards), a listing to prove no stray files are left, file writes and reads.
 #pragma once
 
 #include <algorithm>
@@ -21,7 +21,7 @@ public:
         std::random_device random;
         for (int attempt = 0; attempt < 100; ++attempt) {
             const std::filesystem::path candidate =
-                std::filesystem::temp_directory_path() / ("zeroset-io-test-" + std::to_string(random()));
+                std::filesystem::temp_directory_path() / ("zeroset-test-" + std::to_string(random()));
             if (std::filesystem::create_directory(candidate)) {
                 path_ = candidate;
                 return;
@@ -38,6 +38,14 @@ public:
 
     [[nodiscard]] const std::filesystem::path& path() const { return path_; }
     [[nodiscard]] std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+    /// Writes `text` to `name` inside the directory (creating subdirectories) and returns its path.
+    std::filesystem::path write(const std::string& name, const std::string& text) const {
+        const std::filesystem::path file = path_ / name;
+        std::filesystem::create_directories(file.parent_path());
+        std::ofstream(file, std::ios::binary) << text;
+        return file;
+    }
 
     /// Every entry's name, hidden ones included, sorted.
     [[nodiscard]] std::vector<std::string> entries() const {
