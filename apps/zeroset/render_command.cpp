@@ -34,6 +34,9 @@ Options:
   --height H          image height in pixels (default: the scene's, else 480)
   --spp N             samples per pixel, stratified (default: the scene's, else 1)
   --threads N         render threads (default: all cores)
+  --method M          intersect every object with method M instead of its own:
+                      auto, sphere, interval, lg, newton, regula_falsi, bisection
+                      (see docs/methods.md)
   -q, --quiet         no progress bar and no summary line
   -h, --help          this text
 
@@ -44,7 +47,7 @@ A progress bar is drawn on stderr when it is a terminal; a one-line summary
 }  // namespace
 
 int render_command(const std::vector<std::string>& args) {
-    const Options options(args, {"-o", "--output", "--width", "--height", "--spp", "--threads"},
+    const Options options(args, {"-o", "--output", "--width", "--height", "--spp", "--threads", "--method"},
                           {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(render_usage, stdout);
@@ -66,6 +69,10 @@ int render_command(const std::vector<std::string>& args) {
     settings.height = options.integer("--height").value_or(scene.image.height);
     settings.samples_per_pixel = options.integer("--spp").value_or(scene.image.samples_per_pixel);
     settings.threads = options.integer("--threads").value_or(0);
+    if (const auto name = options.value("--method")) {
+        settings.method = method_from_name(*name);
+        if (!settings.method) throw UsageError("unknown method '" + *name + "' (try zeroset render --help)");
+    }
     validate(settings);
 
     const bool quiet = options.has("-q") || options.has("--quiet");

@@ -2,8 +2,11 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
+
+#include "zeroset/trace/method.hpp"
 
 namespace zeroset {
 
@@ -12,6 +15,8 @@ struct RenderSettings {
     int height = 480;
     int samples_per_pixel = 1;
     int threads = 0;  // 0: all hardware threads
+    /// When given, every object is intersected with this method instead of its own.
+    std::optional<Method> method;
     /// Called after every finished tile with (tiles done, tiles in all), from
     /// one thread at a time.
     std::function<void(int, int)> on_progress;

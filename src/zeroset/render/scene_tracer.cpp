@@ -3,45 +3,54 @@
 
 #include <cmath>
 
-#include "zeroset/expr/lipschitz.hpp"
+#include "zeroset/trace/choose_method.hpp"
 
 namespace zeroset {
 
 namespace {
-/// Hit tolerance relative to the object's size: far below a pixel at any
-/// sensible framing, far above double-precision noise.
-constexpr double relative_epsilon = 1e-6;
+
+/// Tolerances relative to the object's size: sphere tracing's ε far below a
+/// pixel at any sensible framing, the finest isolation width far above
+/// double-precision noise.
+RootFinderSettings settings_for(const Box3& box) {
+    const double scale = std::max(box.diagonal(), 1e-300);
+    RootFinderSettings s;
+    s.sphere_epsilon = 1e-6 * scale;
+    s.tangent_width = 1e-10 * scale;
+    return s;
+}
+
 }  // namespace
 
-PreparedScene::PreparedScene(const Scene& scene) : scene_(&scene), lights_(scene.lights) {
+PreparedScene::PreparedScene(const Scene& scene, std::optional<Method> method)
+    : scene_(&scene), lights_(scene.lights) {
     if (lights_.empty()) lights_.push_back({Light::Kind::Point, scene.camera.from, {}, {1.0, 1.0, 1.0}, true});
     objects_.reserve(scene.objects.size());
     for (const Object& object : scene.objects) {
         Tape tape(object.surface, SlotLayout::OnePerValue);
         const Box3 box = object.bounds.enclosing_box();
-        Evaluator<Dual<Interval>> gradient(tape);
-        const double lipschitz = lipschitz_bound(gradient, box).constant;
-        const double epsilon = relative_epsilon * std::max(box.diagonal(), 1e-300);
-        objects_.push_back({&object, std::move(tape), box, lipschitz, epsilon});
+        const Method resolved = resolve_method(method.value_or(object.method), tape);
+        objects_.push_back({&object, std::move(tape), box, resolved, settings_for(box)});
     }
 }
 
 SceneTracer::SceneTracer(const PreparedScene& prepared) : prepared_(&prepared) {
     objects_.reserve(prepared.objects().size());
     for (const PreparedObject& o : prepared.objects())
-        objects_.push_back({SphereTracer(o.tape, {o.epsilon, 16}), Evaluator<Dual<double>>(o.tape),
-                            Evaluator<double>(o.tape)});
+        objects_.push_back({RayFunction(o.tape), make_root_finder(o.method, o.tape, o.settings),
+                            Evaluator<Dual<double>>(o.tape), Evaluator<double>(o.tape)});
 }
 
 std::optional<double> SceneTracer::first_hit(int index, const Ray& ray, double t_max, TraceCounters& counters) {
     const PreparedObject& o = prepared_->objects()[static_cast<std::size_t>(index)];
     const auto span = o.object->bounds.clip(ray, 0.0, t_max);
     if (!span) return std::nullopt;
+    PerObject& per = objects_[static_cast<std::size_t>(index)];
     const std::uint64_t nans_before = counters.nan_evaluations;
-    const auto t = objects_[static_cast<std::size_t>(index)].tracer.first_hit(ray, *span, counters);
-    if (counters.nan_evaluations != nans_before && !first_nan_)
-        first_nan_ = {index, objects_[static_cast<std::size_t>(index)].tracer.last_nan_point()};
-    return t;
+    per.h.set_ray(ray);
+    const HitResult hit = per.finder->first_hit(per.h, *span, counters);
+    if (counters.nan_evaluations != nans_before && !first_nan_) first_nan_ = {index, per.h.last_nan_point()};
+    return hit.t;
 }
 
 std::optional<SurfaceHit> SceneTracer::closest_hit(const Ray& ray, double t_max, TraceCounters& counters) {
@@ -72,7 +81,7 @@ Vec3d SceneTracer::surface_normal(int index, const Vec3d& p) {
     if (o.object->normals == NormalMode::Analytic) {
         g = evaluate_gradient(per.gradient, p).g;  // eq. 33
     } else {
-        const double h = o.epsilon;  // eq. 34: forward differences
+        const double h = o.settings.sphere_epsilon;  // eq. 34: forward differences
         const double f0 = per.value(p.x, p.y, p.z);
         g = Vec3d{per.value(p.x + h, p.y, p.z) - f0, per.value(p.x, p.y + h, p.z) - f0,
                   per.value(p.x, p.y, p.z + h) - f0} / h;

@@ -7,23 +7,26 @@
 #include <optional>
 #include <vector>
 
+#include <memory>
+
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/scene/scene.hpp"
-#include "zeroset/trace/sphere_tracer.hpp"
+#include "zeroset/trace/root_finder.hpp"
 
 namespace zeroset {
 
 struct PreparedObject {
     const Object* object;
-    Tape tape;
-    Box3 box;              // the bounds' enclosing box
-    double lipschitz;      // L of f over the whole bounds (may be +∞; segments refine it)
-    double epsilon;        // hit tolerance, relative to the bounds' size
+    Tape tape;                    // SlotLayout::OnePerValue, so it can be pruned
+    Box3 box;                     // the bounds' enclosing box
+    Method method;                // resolved: never Method::Auto
+    RootFinderSettings settings;  // tolerances relative to the bounds' size
 };
 
 class PreparedScene {
 public:
-    explicit PreparedScene(const Scene& scene);
+    /// `method`, when given, replaces every object's own method.
+    explicit PreparedScene(const Scene& scene, std::optional<Method> method = std::nullopt);
 
     [[nodiscard]] const Scene& scene() const { return *scene_; }
     [[nodiscard]] const std::vector<PreparedObject>& objects() const { return objects_; }
@@ -59,7 +62,8 @@ public:
 
 private:
     struct PerObject {
-        SphereTracer tracer;
+        RayFunction h;
+        std::unique_ptr<RootFinder> finder;
         Evaluator<Dual<double>> gradient;
         Evaluator<double> value;
     };

@@ -34,15 +34,10 @@ std::string line_and_column(SourceLocation where) {
     return "line " + std::to_string(where.line) + ", column " + std::to_string(where.column);
 }
 
-/// The names method_from_name() accepts. method.hpp keeps no list of them;
-/// method_name() answers "?" past the last enumerator, which ends the walk.
+/// The names method_from_name() accepts.
 std::vector<std::string_view> method_names() {
     std::vector<std::string_view> names;
-    for (int i = 0; i < 64; ++i) {
-        const std::string_view name = method_name(static_cast<Method>(i));
-        if (name == "?") break;
-        names.push_back(name);
-    }
+    for (const Method m : all_methods()) names.push_back(method_name(m));
     return names;
 }
 

@@ -1,13 +1,20 @@
-// The ray-intersection methods an object can ask for. Only sphere tracing
-// exists so far; `auto` picks the best correct method for the object.
+// The ray-intersection methods an object can ask for (survey §§2–5), by name.
+// `auto` picks the best correct method for the object (choose_method).
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace zeroset {
 
-enum class Method { Auto, Sphere };
+enum class Method { Auto, Sphere, Interval, Lg, Newton, RegulaFalsi, Bisection };
+
+/// Every method, `auto` first, in the order help texts list them.
+std::span<const Method> all_methods();
+/// True for the methods that never miss the first root of a function the
+/// evaluator can bound: interval, lg and sphere.
+bool is_guaranteed(Method m);
 
 /// How surface normals are computed: the exact gradient (eq. 33) or forward
 /// differences (eq. 34).

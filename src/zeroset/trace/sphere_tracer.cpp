@@ -2,37 +2,13 @@
 // sphere_tracer.hpp).
 #include "zeroset/trace/sphere_tracer.hpp"
 
-#include <array>
 #include <cmath>
+
+#include "zeroset/trace/segment_stack.hpp"
 
 namespace zeroset {
 
 namespace {
-
-constexpr std::size_t max_depth = 128;
-
-struct Segment {
-    double a, b;
-    std::size_t depth;  // number of splits above it; its parent's tape is pruned_[depth - 1]
-};
-
-/// Segments waiting to be marched, front of the ray on top. Splitting pushes
-/// two halves for one popped segment, so the stack grows by one per level;
-/// a segment is split only while depth and stack have room (otherwise it is
-/// simply marched with the bound it has, which is still safe).
-class SegmentStack {
-public:
-    void push(double a, double b, std::size_t depth) { items_[size_++] = {a, b, depth}; }
-    [[nodiscard]] bool can_split(const Segment& s) const {
-        return size_ + 2 <= items_.size() && s.depth + 1 < max_depth;
-    }
-    [[nodiscard]] bool empty() const { return size_ == 0; }
-    Segment pop() { return items_[--size_]; }
-
-private:
-    std::array<Segment, max_depth + 2> items_{};
-    std::size_t size_ = 0;
-};
 
 Box3 segment_box(const Ray& ray, double a, double b) {
     const Vec3d pa = ray.at(a), pb = ray.at(b);
@@ -42,12 +18,12 @@ Box3 segment_box(const Ray& ray, double a, double b) {
 }  // namespace
 
 SphereTracer::SphereTracer(const Tape& tape, SphereTraceSettings settings)
-    : settings_(settings), tape_(&tape), pruner_(tape), pruned_(max_depth), point_(tape), slope_(tape) {}
+    : settings_(settings), tape_(&tape), pruner_(tape), pruned_(SegmentStack::max_depth), point_(tape), slope_(tape) {}
 
 double SphereTracer::value_at(const Ray& ray, double t, TraceCounters& counters) {
     const Vec3d p = ray.at(t);
     ++counters.point_evaluations;
-    const double h = point_(p.x, p.y, p.z);
+    const double h = side_ * point_(p.x, p.y, p.z);
     if (std::isnan(h)) {
         ++counters.nan_evaluations;
         last_nan_point_ = p;
@@ -55,25 +31,22 @@ double SphereTracer::value_at(const Ray& ray, double t, TraceCounters& counters)
     return h;
 }
 
-std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCounters& counters) {
+std::optional<double> SphereTracer::first_crossing(const Ray& ray, Span span, double side, TraceCounters& counters) {
     const double eps = settings_.epsilon;
+    side_ = side;
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
     while (!segments.empty()) {
         const Segment segment = segments.pop();
         const auto [a, b, depth] = segment;
-        const auto split = [&](double from) {
-            const double mid = 0.5 * (from + b);
-            segments.push(mid, b, depth + 1);
-            segments.push(from, mid, depth + 1);
-        };
 
         // Fig. 9, step 2 — and the tape pruned to this segment. The box
         // reaches 2ε past b, where a hit is confirmed (below).
         ++counters.interval_evaluations;
         const Tape& parent = depth == 0 ? *tape_ : pruned_[depth - 1];
         Tape& tape = pruned_[depth];
-        const Interval value = pruner_.prune(parent, segment_box(ray, a, b + 2.0 * eps), tape);
+        const Interval enclosure = pruner_.prune(parent, segment_box(ray, a, b + 2.0 * eps), tape);
+        const Interval value = side > 0.0 ? enclosure : -enclosure;
         if (value.is_empty()) {  // f is undefined (NaN) all over this segment
             ++counters.nan_evaluations;
             last_nan_point_ = ray.at(0.5 * (a + b));
@@ -88,7 +61,7 @@ std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCo
         const bool splittable = b - a > 2.0 * eps && segments.can_split(segment);
         if (!std::isfinite(lipschitz)) {
             if (splittable) {
-                split(a);
+                segments.split(segment, a);
                 continue;
             }
             // An ε-segment whose slope has no finite bound (e.g. sqrt at 0):
@@ -115,7 +88,7 @@ std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCo
                 if (std::isnan(h_ahead)) return std::nullopt;
                 if (h_ahead <= 0.0) return t;
                 if (b - ahead > 2.0 * eps && segments.can_split(segment)) {
-                    split(ahead);
+                    segments.split(segment, ahead);
                     break;
                 }
                 t = ahead;  // an ε-segment positive at both ends: at most a sub-ε graze
@@ -125,7 +98,7 @@ std::optional<double> SphereTracer::first_hit(const Ray& ray, Span span, TraceCo
             t += h / lipschitz;  // D(t) = H(t) / Lip H
             if (t >= b) break;   // this segment is clear
             if (steps >= settings_.steps_before_split && b - t > 2.0 * eps && segments.can_split(segment)) {
-                split(t);
+                segments.split(segment, t);
                 break;
             }
         }

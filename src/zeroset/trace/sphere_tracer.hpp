@@ -44,15 +44,21 @@ public:
     SphereTracer(const Tape& tape, SphereTraceSettings settings);
 
     /// The smallest t in span at which the ray (unit direction) meets the
-    /// surface, to within settings.epsilon; nothing if it does not.
-    std::optional<double> first_hit(const Ray& ray, Span span, TraceCounters& counters);
+    /// surface, to within settings.epsilon; nothing if it does not. The
+    /// surface is crossed in [t, t + 2ε].
+    std::optional<double> first_hit(const Ray& ray, Span span, TraceCounters& counters) {
+        return first_crossing(ray, span, 1.0, counters);
+    }
+    /// The same for the function side·f: with side = −1, the first point
+    /// where a ray inside the solid leaves it.
+    std::optional<double> first_crossing(const Ray& ray, Span span, double side, TraceCounters& counters);
 
     [[nodiscard]] const SphereTraceSettings& settings() const { return settings_; }
     /// Where f last evaluated to NaN (counted in TraceCounters::nan_evaluations).
     [[nodiscard]] const Vec3d& last_nan_point() const { return last_nan_point_; }
 
 private:
-    /// f at ray.at(t) on the current pruned tape; a NaN is counted and its point remembered.
+    /// side·f at ray.at(t) on the current pruned tape; a NaN is counted and its point remembered.
     double value_at(const Ray& ray, double t, TraceCounters& counters);
 
     SphereTraceSettings settings_;
@@ -62,6 +68,7 @@ private:
     Evaluator<double> point_;
     Evaluator<Dual<Interval>> slope_;  // f and ∇f over a box
     Vec3d last_nan_point_{};
+    double side_ = 1.0;
 };
 
 }  // namespace zeroset

@@ -1,0 +1,22 @@
+// The interval method (Mitchell 1990; survey §4, Figs. 9 and 10). Bisect the
+// span; drop a segment where the enclosure of H excludes 0; a segment where
+// the enclosure of H′ excludes 0 is monotone and holds at most one root, which
+// a sign change at its ends proves and guarded Newton refines to full double
+// precision. A segment that still may hold a root at `tangent_width` is a
+// tangent (double) root, or a feature too thin to tell apart: it is reported
+// as a hit at its left end.
+#pragma once
+
+#include "zeroset/trace/isolating_method.hpp"
+
+namespace zeroset {
+
+class IntervalMethod : public IsolatingMethod {
+public:
+    explicit IntervalMethod(const RootFinderSettings& settings) : IsolatingMethod(settings) {}
+
+protected:
+    HitStatus isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) override;
+};
+
+}  // namespace zeroset

@@ -1,0 +1,34 @@
+// First hit and all hits over an isolation walk.
+#include "zeroset/trace/isolating_method.hpp"
+
+namespace zeroset {
+
+HitResult IsolatingMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {
+    const double start = h.value(span.t0, counters);
+    if (start != start) return {std::nullopt, HitStatus::Failed};
+    if (start <= 0.0) return {span.t0, HitStatus::Ok};  // the ray starts in the solid
+    std::optional<double> first;
+    auto take_first = [&first](double t) {
+        first = t;
+        return false;
+    };
+    const HitStatus status = isolate(h, span, counters, take_first);
+    if (first) return {first, HitStatus::Ok};
+    return {std::nullopt, status};
+}
+
+HitStatus IsolatingMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
+    const std::size_t before = hits.size();
+    const double merge_width = 4.0 * settings_.tangent_width;
+    auto collect = [&](double t) {
+        // A root on the boundary of two segments is found from both sides, and
+        // a tangent root may span neighbouring finest segments: keep one.
+        if (hits.size() == before || t - hits.back() > merge_width) hits.push_back(t);
+        return true;
+    };
+    const HitStatus status = isolate(h, span, counters, collect);
+    if (status == HitStatus::Failed) return status;
+    return hits.size() > before ? HitStatus::Ok : HitStatus::NoHit;
+}
+
+}  // namespace zeroset

@@ -1,0 +1,55 @@
+// Sphere tracing plus refinement of the bracket [t, t + 2ε] it ends on.
+#include "zeroset/trace/sphere_method.hpp"
+
+#include <cmath>
+
+#include "zeroset/trace/refine_bracket.hpp"
+
+namespace zeroset {
+
+SphereMethod::SphereMethod(const Tape& tape, const RootFinderSettings& settings)
+    : settings_(settings), tracer_(tape, {settings.sphere_epsilon, 16}) {}
+
+std::optional<double> SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCounters& counters) {
+    const std::uint64_t nans = counters.nan_evaluations;
+    const auto t = tracer_.first_crossing(h.ray(), span, side, counters);
+    if (counters.nan_evaluations != nans) {
+        h.remember_nan_point(tracer_.last_nan_point());
+        return std::nullopt;
+    }
+    if (!t) return std::nullopt;
+    // The surface is crossed in [t, t + 2ε]: refine to full precision.
+    const double end = std::min(*t + 2.0 * settings_.sphere_epsilon, span.t1);
+    if (const auto root = refine_sign_change(h, *t, end, counters)) return root;
+    return t;
+}
+
+HitResult SphereMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {
+    const double start = h.value(span.t0, counters);
+    if (std::isnan(start)) return {std::nullopt, HitStatus::Failed};
+    if (start <= 0.0) return {span.t0, HitStatus::Ok};  // the ray starts in the solid
+    const std::uint64_t nans = counters.nan_evaluations;
+    if (const auto t = crossing(h, span, 1.0, counters)) return {t, HitStatus::Ok};
+    return {std::nullopt, counters.nan_evaluations != nans ? HitStatus::Failed : HitStatus::NoHit};
+}
+
+HitStatus SphereMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
+    const double start = h.value(span.t0, counters);
+    if (std::isnan(start)) return HitStatus::Failed;
+    const std::size_t before = hits.size();
+    const std::uint64_t nans = counters.nan_evaluations;
+    double side = start > 0.0 ? 1.0 : -1.0;
+    double t = span.t0;
+    while (t < span.t1) {
+        const auto root = crossing(h, {t, span.t1}, side, counters);
+        if (!root) break;
+        hits.push_back(*root);
+        // Resume just past the root, on the other side of the surface.
+        t = std::max(*root, t) + 2.0 * settings_.sphere_epsilon;
+        side = -side;
+    }
+    if (counters.nan_evaluations != nans) return HitStatus::Failed;
+    return hits.size() > before ? HitStatus::Ok : HitStatus::NoHit;
+}
+
+}  // namespace zeroset

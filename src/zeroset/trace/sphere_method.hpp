@@ -1,0 +1,29 @@
+// Sphere tracing (survey §5.2, Fig. 12; see sphere_tracer.hpp) behind the
+// RootFinder interface, with a final refinement so its hits are as precise
+// as the other methods'. All hits alternate between entering the solid
+// (tracing f) and leaving it (tracing −f).
+#pragma once
+
+#include "zeroset/trace/root_finder.hpp"
+#include "zeroset/trace/sphere_tracer.hpp"
+
+namespace zeroset {
+
+class SphereMethod : public RootFinder {
+public:
+    /// `tape` must use SlotLayout::OnePerValue.
+    SphereMethod(const Tape& tape, const RootFinderSettings& settings);
+
+    HitResult first_hit(RayFunction& h, Span span, TraceCounters& counters) override;
+    HitStatus all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) override;
+
+private:
+    /// The first crossing in the span (entering the solid when side = 1,
+    /// leaving it when −1), refined.
+    std::optional<double> crossing(RayFunction& h, Span span, double side, TraceCounters& counters);
+
+    RootFinderSettings settings_;
+    SphereTracer tracer_;
+};
+
+}  // namespace zeroset
