@@ -128,6 +128,38 @@ TEST(WorkedExample, BlinnBlendHasFourRootsAndEveryGuaranteedMethodFindsThem) {
     }
 }
 
+TEST(WorkedExample, NewtonFromThreePointFiveToFourBehavesAsFigureFourSays) {
+    Subject s("blinn_blobs.zs");
+    const std::vector<double> roots = sampled_roots(s);
+    ASSERT_EQ(roots.size(), 4u);
+    // Fig. 4's caption: from t0 = 3.5 the first root, 3.6 the third, 3.7
+    // diverges (it shoots back to −5), 3.8 the fourth, 3.9 diverges (a peak),
+    // 4.0 the second.
+    struct Case {
+        double t0;
+        int root;  // index into roots, or −1 for divergence
+    };
+    for (const Case c : {Case{3.5, 0}, Case{3.6, 2}, Case{3.7, -1}, Case{3.8, 3}, Case{3.9, -1}, Case{4.0, 1}}) {
+        RayFunction h(s.tape);
+        h.set_ray(survey_ray);
+        MethodLog log;
+        RootFinderSettings settings = s.settings();
+        settings.newton_start = c.t0;
+        settings.log = &log;
+        TraceCounters counters;
+        // Newton runs on the whole ray here, as in the survey's figure.
+        const HitResult r = make_root_finder(Method::Newton, s.tape, settings)->first_hit(h, {-10.0, 20.0}, counters);
+        if (c.root < 0) {
+            EXPECT_EQ(r.status, HitStatus::Diverged) << "t0 = " << c.t0;
+        } else {
+            ASSERT_TRUE(r.t) << "t0 = " << c.t0 << " status " << hit_status_name(r.status);
+            EXPECT_NEAR(*r.t, roots[static_cast<std::size_t>(c.root)], 1e-12) << "t0 = " << c.t0;
+        }
+        EXPECT_EQ(log.newton_iterates.front(), c.t0);
+        EXPECT_LE(counters.evaluations(), 64u);  // bounded: it never loops
+    }
+}
+
 TEST(WorkedExample, SoftObjectsRootsAreFoundByEveryGuaranteedMethod) {
     Subject s("soft_objects.zs");
     const std::vector<double> reference = sampled_roots(s);
