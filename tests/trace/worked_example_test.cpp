@@ -27,11 +27,7 @@ struct Subject {
           span(*scene.objects.at(0).bounds.clip(survey_ray, 0.0, 1e9)) {}
 
     [[nodiscard]] RootFinderSettings settings() const {
-        RootFinderSettings s;
-        const double scale = scene.objects.at(0).bounds.enclosing_box().diagonal();
-        s.sphere_epsilon = 1e-6 * scale;
-        s.tangent_width = 1e-10 * scale;
-        return s;
+        return settings_for_scale(scene.objects.at(0).bounds.enclosing_box().diagonal());
     }
 
     std::vector<double> all_hits(Method method) {

@@ -7,21 +7,6 @@
 
 namespace zeroset {
 
-namespace {
-
-/// Tolerances relative to the object's size: sphere tracing's ε far below a
-/// pixel at any sensible framing, the finest isolation width far above
-/// double-precision noise.
-RootFinderSettings settings_for(const Box3& box) {
-    const double scale = std::max(box.diagonal(), 1e-300);
-    RootFinderSettings s;
-    s.sphere_epsilon = 1e-6 * scale;
-    s.tangent_width = 1e-10 * scale;
-    return s;
-}
-
-}  // namespace
-
 PreparedScene::PreparedScene(const Scene& scene, std::optional<Method> method)
     : scene_(&scene), lights_(scene.lights) {
     if (lights_.empty()) lights_.push_back({Light::Kind::Point, scene.camera.from, {}, {1.0, 1.0, 1.0}, true});
@@ -30,7 +15,7 @@ PreparedScene::PreparedScene(const Scene& scene, std::optional<Method> method)
         Tape tape(object.surface, SlotLayout::OnePerValue);
         const Box3 box = object.bounds.enclosing_box();
         const Method resolved = resolve_method(method.value_or(object.method), tape);
-        objects_.push_back({&object, std::move(tape), box, resolved, settings_for(box)});
+        objects_.push_back({&object, std::move(tape), box, resolved, settings_for_scale(box.diagonal())});
     }
 }
 

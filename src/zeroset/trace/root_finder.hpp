@@ -54,6 +54,11 @@ struct RootFinderSettings {
     MethodLog* log = nullptr;
 };
 
+/// Tolerances for an object of size `scale` (its bounds' diagonal): sphere
+/// tracing's ε far below a pixel at any sensible framing, the finest
+/// isolation width far above double-precision noise.
+RootFinderSettings settings_for_scale(double scale);
+
 class RootFinder {
 public:
     virtual ~RootFinder() = default;
