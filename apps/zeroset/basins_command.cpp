@@ -2,16 +2,16 @@
 // (eq. 22) reaches from every start value t₀ of a rectangle of the complex
 // plane, for one object along one ray. Options, the scene and the output
 // name are all checked before any work, and the image is written atomically.
-#include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "commands.hpp"
 #include "options.hpp"
+#include "ray_options.hpp"
 #include "zeroset/io/image_writer.hpp"
 #include "zeroset/render/newton_basins.hpp"
 #include "zeroset/scene/load_scene.hpp"
@@ -48,55 +48,6 @@ Options:
   -h, --help          this text
 )";
 
-/// The option's value as `count` comma-separated finite numbers, or nothing when absent.
-std::optional<std::vector<double>> numbers(const Options& options, const std::string& name, std::size_t count) {
-    const auto text = options.value(name);
-    if (!text) return std::nullopt;
-    std::vector<double> result;
-    const char* p = text->data();
-    const char* const end = p + text->size();
-    while (true) {
-        double value = 0.0;
-        const auto [next, error] = std::from_chars(p, end, value);
-        if (error != std::errc() || !std::isfinite(value)) break;
-        result.push_back(value);
-        p = next;
-        if (p == end || *p != ',') break;
-        ++p;
-    }
-    if (p != end || result.size() != count)
-        throw UsageError("option " + name + " needs " + std::to_string(count) +
-                         " finite numbers separated by commas, got '" + *text + "'");
-    return result;
-}
-
-std::optional<Vec3d> vector_option(const Options& options, const std::string& name) {
-    const auto v = numbers(options, name, 3);
-    if (!v) return std::nullopt;
-    return Vec3d{(*v)[0], (*v)[1], (*v)[2]};
-}
-
-/// Overrides [lo, hi] from a `MIN,MAX` option.
-void read_range(const Options& options, const std::string& name, double& lo, double& hi) {
-    if (const auto v = numbers(options, name, 2)) {
-        lo = (*v)[0];
-        hi = (*v)[1];
-        if (!(lo < hi)) throw UsageError("option " + name + " needs MIN < MAX, got '" + *options.value(name) + "'");
-    }
-}
-
-const Object& find_object(const Scene& scene, const std::optional<std::string>& name) {
-    if (scene.objects.empty()) throw UsageError("the scene has no objects");
-    if (!name) return scene.objects.front();
-    std::string names;
-    for (const Object& object : scene.objects) {
-        if (object.name == *name) return object;
-        if (!object.name.empty()) names += (names.empty() ? "'" : ", '") + object.name + "'";
-    }
-    throw UsageError("the scene has no object named '" + *name + "'" +
-                     (names.empty() ? std::string(" (its objects have no names)") : " (it has " + names + ")"));
-}
-
 }  // namespace
 
 int basins_command(const std::vector<std::string>& args) {
@@ -114,14 +65,14 @@ int basins_command(const std::vector<std::string>& args) {
     if (const auto problem = image_format_problem(output)) throw UsageError(output.string() + ": " + *problem);
 
     BasinSettings settings;
-    read_range(options, "--re", settings.region.re_min, settings.region.re_max);
-    read_range(options, "--im", settings.region.im_min, settings.region.im_max);
+    if (const auto re = range_option(options, "--re")) std::tie(settings.region.re_min, settings.region.re_max) = *re;
+    if (const auto im = range_option(options, "--im")) std::tie(settings.region.im_min, settings.region.im_max) = *im;
     settings.width = options.integer("--width").value_or(settings.width);
     settings.height = options.integer("--height").value_or(settings.height);
     settings.max_iterations = options.integer("--iterations").value_or(settings.max_iterations);
     settings.threads = options.integer("--threads").value_or(settings.threads);
-    const Ray ray{vector_option(options, "--origin").value_or(Vec3d{-4.905, -0.67, 0.364}),
-                  vector_option(options, "--dir").value_or(Vec3d{0.981, 0.174, 0.0872})};
+    const Ray ray{vector_option(options, "--origin").value_or(survey_origin),
+                  vector_option(options, "--dir").value_or(survey_dir)};
 
     const Scene scene = options.positional().empty() ? default_scene() : load_scene(options.positional()[0]);
     const Object& object = find_object(scene, options.value("--object"));

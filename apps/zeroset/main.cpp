@@ -15,6 +15,7 @@ constexpr const char* usage = R"(zeroset — ray tracing implicit surfaces
 Usage:
   zeroset render [SCENE] [options]   render a scene (the built-in default when SCENE is omitted)
   zeroset basins [SCENE] [options]   map where Newton's method converges along a ray (the survey's Figure 5)
+  zeroset ray [SCENE] [options]      every intersection method on one ray: hits, evaluations, a plot of H(t)
   zeroset --help                     this text
   zeroset COMMAND --help             a command's options
   zeroset --version                  the version
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
         const std::vector<std::string> rest(args.begin() + 1, args.end());
         if (args[0] == "render") return zeroset::cli::render_command(rest);
         if (args[0] == "basins") return zeroset::cli::basins_command(rest);
+        if (args[0] == "ray") return zeroset::cli::ray_command(rest);
         throw zeroset::cli::UsageError("unknown command '" + args[0] + "' (try zeroset --help)");
     } catch (const zeroset::cli::UsageError& e) {
         std::fprintf(stderr, "zeroset: %s\n", e.what());

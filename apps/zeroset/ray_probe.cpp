@@ -1,0 +1,62 @@
+// Running the methods on one ray.
+#include "ray_probe.hpp"
+
+#include <exception>
+#include <limits>
+
+#include "zeroset/trace/choose_method.hpp"
+
+namespace zeroset::cli {
+
+namespace {
+
+void run_method(MethodOutcome& o, const Tape& tape, const Ray& ray, Span span, const RootFinderSettings& settings) {
+    RayFunction h(tape);
+    h.set_ray(ray);
+    RootFinderSettings s = settings;
+    auto note_failure = [&o](HitStatus& status, const std::exception& e) {
+        status = HitStatus::Failed;
+        if (o.message.empty()) o.message = e.what();
+    };
+
+    TraceCounters first_counters;
+    try {
+        s.log = &o.first_hit_log;
+        const HitResult hit = make_root_finder(o.resolved, tape, s)->first_hit(h, span, first_counters);
+        o.first_hit = hit.t;
+        o.status = hit.status;
+    } catch (const std::exception& e) {
+        note_failure(o.status, e);
+    }
+    o.evaluations = first_counters.evaluations();
+
+    TraceCounters all_counters;
+    try {
+        s.log = &o.all_hits_log;
+        o.all_hits_status = make_root_finder(o.resolved, tape, s)->all_hits(h, span, o.hits, all_counters);
+    } catch (const std::exception& e) {
+        note_failure(o.all_hits_status, e);
+    }
+    o.all_hits_evaluations = all_counters.evaluations();
+}
+
+}  // namespace
+
+RayProbe probe_ray(const Tape& tape, const Bounds& bounds, const Ray& ray, std::span<const Method> methods,
+                   const RootFinderSettings& settings) {
+    RayProbe probe{ray, bounds.clip(ray, 0.0, std::numeric_limits<double>::infinity()), {}};
+    for (const Method m : methods) {
+        MethodOutcome& o = probe.methods.emplace_back();
+        o.method = m;
+        o.resolved = resolve_method(m, tape);
+        if (probe.span) run_method(o, tape, ray, *probe.span, settings);
+    }
+    return probe;
+}
+
+std::string method_label(const MethodOutcome& outcome) {
+    if (outcome.method == Method::Auto) return "auto (" + std::string(method_name(outcome.resolved)) + ")";
+    return std::string(method_name(outcome.method));
+}
+
+}  // namespace zeroset::cli

@@ -1,0 +1,52 @@
+// RayProbe: one ray through one object, asked of several intersection
+// methods in turn — first hit and all hits, with the evaluations each query
+// spent and what the method logged — so that `zeroset ray` can compare the
+// survey's methods on the same ray (DESIGN.md, "isolate, then refine").
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "zeroset/expr/tape.hpp"
+#include "zeroset/trace/bounds.hpp"
+#include "zeroset/trace/root_finder.hpp"
+
+namespace zeroset::cli {
+
+struct MethodOutcome {
+    Method method;    // as asked; may be Method::Auto
+    Method resolved;  // what ran: never Method::Auto
+
+    std::optional<double> first_hit;
+    HitStatus status = HitStatus::NoHit;
+    std::uint64_t evaluations = 0;  // TraceCounters::evaluations() of the first-hit query
+
+    std::vector<double> hits;
+    HitStatus all_hits_status = HitStatus::NoHit;
+    std::uint64_t all_hits_evaluations = 0;  // … of the all-hits query
+
+    std::string message;  // why the method failed, when it threw
+    MethodLog first_hit_log;
+    MethodLog all_hits_log;
+};
+
+struct RayProbe {
+    Ray ray;
+    std::optional<Span> span;  // the ray inside the bounds, from t = 0; none when it misses them
+    std::vector<MethodOutcome> methods;
+};
+
+/// Runs every method of `methods` on the ray: a fresh RootFinder for each
+/// query, so neither query's evaluations or log include the other's. A
+/// method that throws (e.g. one not implemented yet) is reported as failed
+/// with the exception's message. `tape` must use SlotLayout::OnePerValue.
+RayProbe probe_ray(const Tape& tape, const Bounds& bounds, const Ray& ray, std::span<const Method> methods,
+                   const RootFinderSettings& settings);
+
+/// "auto (sphere)" for auto, else the method's name.
+std::string method_label(const MethodOutcome& outcome);
+
+}  // namespace zeroset::cli
