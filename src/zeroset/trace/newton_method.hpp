@@ -1,8 +1,9 @@
 // Newton's method as a ray-intersection method (survey §2, eq. 22, Fig. 4):
 // iterate from a start (the span's t0 unless given) and report the root it
 // converges to — which need not be the first one — or that it diverged (left
-// the span) or failed (zero derivative, iteration limit, NaN). It guarantees
-// nothing; it is here to show why root isolation matters.
+// the span widened by its length on each side) or failed (zero derivative,
+// iteration limit, NaN). A root it reaches outside the span is no hit. It
+// guarantees nothing; it is here to show why root isolation matters.
 #pragma once
 
 #include "zeroset/trace/root_finder.hpp"
