@@ -53,6 +53,10 @@ Options:
   --plot FILE.svg     also draw H(t) over the span: the graph, each method's
                       hits, the interval method's boxes (Fig. 10) and, with
                       --newton-from, Newton's iterates (Fig. 4); one ray only
+  --compare SCENE     with --plot: also draw, dashed, H of SCENE's object along
+                      the same ray (Fig. 8 compares soft objects with Blinn's)
+  --compare-object NAME
+                      which object of the --compare scene (default: its first)
   -h, --help          this text
 
 Evaluations are TraceCounters::evaluations(): point evaluations of f plus
@@ -87,7 +91,8 @@ std::vector<Ray> chosen_rays(const Options& options, bool default_scene) {
 }  // namespace
 
 int ray_command(const std::vector<std::string>& args) {
-    const Options options(args, {"--origin", "--dir", "--object", "--method", "--newton-from", "--rays", "--plot"},
+    const Options options(args, {"--origin", "--dir", "--object", "--method", "--newton-from", "--rays", "--plot",
+                                 "--compare", "--compare-object"},
                           {"-h", "--help", "--json"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(ray_usage, stdout);
@@ -110,12 +115,28 @@ int ray_command(const std::vector<std::string>& args) {
     RootFinderSettings settings = settings_for_scale(object.bounds.enclosing_box().diagonal());
     settings.newton_start = subject.newton_from;
 
+    // --compare: another scene's object, drawn along the same ray.
+    std::optional<Scene> compare_scene;
+    std::optional<Tape> compare_tape;
+    std::optional<ComparedFunction> compared;
+    if (const auto file = options.value("--compare")) {
+        if (!plot_file) throw UsageError("--compare adds a curve to the plot: give --plot too");
+        compare_scene = load_scene(*file);
+        const Object& other = find_object(*compare_scene, options.value("--compare-object"));
+        compare_tape.emplace(other.surface);
+        const std::string file_name = std::filesystem::path(*file).filename().string();
+        compared = ComparedFunction{"H of " + (other.name.empty() ? file_name : other.name + " (" + file_name + ")"),
+                                    &*compare_tape};
+    } else if (options.value("--compare-object")) {
+        throw UsageError("--compare-object names an object of the --compare scene: give --compare too");
+    }
+
     std::string output;
     for (const Ray& ray : rays) {
         const RayProbe probe = probe_ray(tape, object.bounds, ray, methods, settings);
         if (plot_file) {
             if (!probe.span) throw std::runtime_error("cannot plot: the ray misses the object's bounds");
-            write_svg_plot(ray_plot(subject, probe, tape), *plot_file);
+            write_svg_plot(ray_plot(subject, probe, tape, compared), *plot_file);
             std::fprintf(stderr, "zeroset: wrote %s\n", plot_file->string().c_str());
         }
         if (options.has("--json")) output += ray_report_json(subject, probe) + "\n";

@@ -118,7 +118,8 @@ PlotLane lane(const MethodOutcome& o) {
 
 }  // namespace
 
-Plot ray_plot(const RaySubject& subject, const RayProbe& probe, const Tape& tape) {
+Plot ray_plot(const RaySubject& subject, const RayProbe& probe, const Tape& tape,
+              const std::optional<ComparedFunction>& compared) {
     if (!probe.span) throw std::invalid_argument("ray_plot: the ray misses the object's bounds");
     const Span span = *probe.span;
     RayFunction h(tape);
@@ -134,6 +135,16 @@ Plot ray_plot(const RaySubject& subject, const RayProbe& probe, const Tape& tape
     }
     plot.y = vertical_range(graph.points);
     plot.curves.push_back(std::move(graph));
+    if (compared) {
+        RayFunction other(*compared->tape);
+        other.set_ray(probe.ray);
+        PlotCurve curve{compared->label, "#7a5195", {}, 1.6, true};
+        for (int i = 0; i <= samples; ++i) {
+            const double t = plot.x.lo + (plot.x.hi - plot.x.lo) * i / samples;
+            curve.points.push_back({t, other.value(t, unused)});
+        }
+        plot.curves.push_back(std::move(curve));
+    }
 
     plot.title = "H(t) along the ray" + (subject.object.empty() ? std::string() : " through " + subject.object) +
                  " (" + subject.scene + ")";

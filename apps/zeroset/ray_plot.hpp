@@ -4,14 +4,25 @@
 // it, the roots each method found.
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include "ray_probe.hpp"
 #include "ray_report.hpp"
 #include "zeroset/io/svg_plot.hpp"
 
 namespace zeroset::cli {
 
+/// Another object's H along the same ray, drawn dashed for comparison (the
+/// survey's Fig. 8 sets soft objects against Blinn's blobs this way).
+struct ComparedFunction {
+    std::string label;
+    const Tape* tape;
+};
+
 /// The plot of one probed ray; the probe must have a span. `tape` is the
 /// object's, for sampling H.
-Plot ray_plot(const RaySubject& subject, const RayProbe& probe, const Tape& tape);
+Plot ray_plot(const RaySubject& subject, const RayProbe& probe, const Tape& tape,
+              const std::optional<ComparedFunction>& compared = std::nullopt);
 
 }  // namespace zeroset::cli

@@ -245,6 +245,20 @@ TEST_F(RayCli, PlotWritesAnSvg) {
     EXPECT_EQ(dir_.entries(), std::vector<std::string>{"ray.svg"});
 }
 
+TEST_F(RayCli, CompareDrawsASecondSceneDashedLikeFigureEight) {
+    const std::string soft = std::string(ZEROSET_SOURCE_DIR) + "/scenes/hart1993/soft_objects.zs";
+    const std::string blinn = std::string(ZEROSET_SOURCE_DIR) + "/scenes/hart1993/blinn_blobs.zs";
+    const Outcome r = run("ray '" + soft + "' --origin -4.905,-0.67,0.364 --dir 0.981,0.174,0.0872 --plot fig8.svg" +
+                          " --compare '" + blinn + "' --compare-object blobs");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string svg = read_text(dir_ / "fig8.svg");
+    EXPECT_NE(svg.find("H of blobs (blinn_blobs.zs)"), std::string::npos);
+    EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);  // the compared curve
+    const Outcome without_plot = run("ray --compare '" + blinn + "'");
+    EXPECT_EQ(without_plot.status, 2);
+    EXPECT_NE(without_plot.err.find("--plot"), std::string::npos) << without_plot.err;
+}
+
 TEST_F(RayCli, UsageErrorsWriteNothing) {
     dir_.write("sphere.zs", "object \"ball\" { surface x^2 + y^2 + z^2 - 1 }\n");
     const Outcome no_ray = run("ray sphere.zs");
