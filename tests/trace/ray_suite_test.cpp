@@ -1,0 +1,213 @@
+// The ray suite (tests/data/ray_suite.tsv, support/ray_suite.hpp): its shape,
+// a few hundred of its MPFI references checked against dense double sampling
+// (an independent check of the oracle), and the sphere tracer run over every
+// ray. Sphere tracing guarantees today that it never steps over the first
+// root: a hit lies within 2ε of the reference, and only a graze — a ray that
+// is inside the surface for less than 2ε, or touches it — may be missed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+
+#include "support/ray_suite.hpp"
+#include "support/ray_suite_surfaces.hpp"
+#include "zeroset/expr/evaluator.hpp"
+#include "zeroset/trace/sphere_tracer.hpp"
+
+namespace zeroset::test {
+namespace {
+
+const std::vector<SuiteRay>& suite() {
+    static const std::vector<SuiteRay> rays =
+        load_ray_suite(std::filesystem::path(ZEROSET_SOURCE_DIR) / "tests" / "data" / "ray_suite.tsv");
+    return rays;
+}
+
+/// Where a ray leaves the solid after its first root, as far as [t0, t1] shows: the next root, or t1.
+double dip_end(const SuiteRay& r) { return r.t_next.value_or(r.span.t1); }
+
+std::string describe(const SuiteRay& r) {
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%s/%s o=(%.17g, %.17g, %.17g) d=(%.17g, %.17g, %.17g) span=[%.17g, %.17g] ref=%s %.17g",
+                  r.surface.c_str(), r.ray_class.c_str(), r.ray.origin.x, r.ray.origin.y, r.ray.origin.z, r.ray.dir.x,
+                  r.ray.dir.y, r.ray.dir.z, r.span.t0, r.span.t1, std::string(ref_kind_name(r.kind)).c_str(),
+                  r.t_ref.value_or(NAN));
+    return text;
+}
+
+TEST(RaySuite, IsLargeAndCoversEveryCase) {
+    const auto& rays = suite();
+    EXPECT_GE(rays.size(), 10000U);
+    std::set<std::string> surfaces, classes;
+    std::map<RefKind, int> kinds;
+    for (const SuiteRay& r : rays) {
+        const SuiteSurface& s = ray_suite_surface(r.surface);
+        ASSERT_EQ(r.scale, s.scale()) << describe(r);
+        ASSERT_LT(r.span.t0, r.span.t1) << describe(r);
+        ASSERT_NEAR(length(r.ray.dir), 1.0, 1e-15) << describe(r);
+        if (r.t_ref) {
+            ASSERT_GE(*r.t_ref, r.span.t0) << describe(r);
+            ASSERT_LE(*r.t_ref, r.span.t1) << describe(r);
+        }
+        if (r.t_next) {
+            ASSERT_TRUE(r.t_ref.has_value()) << describe(r);
+            ASSERT_GT(*r.t_next, *r.t_ref) << describe(r);
+        }
+        surfaces.insert(r.surface);
+        classes.insert(r.ray_class);
+        ++kinds[r.kind];
+    }
+    EXPECT_EQ(surfaces.size(), ray_suite_surfaces().size());
+    for (const char* c : {"random", "graze", "graze_approx", "near_miss", "shallow", "near_t0", "near_t1", "past_t1",
+                          "thin", "singular"})
+        EXPECT_TRUE(classes.contains(c)) << c;
+    EXPECT_GE(kinds[RefKind::Simple], 5000);
+    EXPECT_GE(kinds[RefKind::Tangent], 300);
+    EXPECT_GE(kinds[RefKind::Multiple], 1);
+    EXPECT_GE(kinds[RefKind::None], 3000);
+}
+
+/// f along a ray in plain doubles, one evaluator per surface.
+class DoubleRayFunction {
+public:
+    double operator()(const SuiteRay& r, double t) {
+        auto& slot = evaluators_[r.surface];
+        if (!slot) {
+            tapes_.push_back(std::make_unique<Tape>(ray_suite_surface(r.surface).f));
+            slot = std::make_unique<Evaluator<double>>(*tapes_.back());
+        }
+        const Vec3d p = r.ray.at(t);
+        return (*slot)(p.x, p.y, p.z);
+    }
+
+private:
+    std::vector<std::unique_ptr<Tape>> tapes_;
+    std::map<std::string, std::unique_ptr<Evaluator<double>>> evaluators_;
+};
+
+// Every 37th ray (about 300) is sampled at 20 000 points in plain doubles.
+// A sample clearly below 0 proves a root at or before it, which the reference
+// must have found; and a simple root whose dip is several samples wide must
+// be where the samples first change sign — where, if it is steep enough for
+// doubles to see its sign change sharply, bisecting the sign change in
+// doubles lands within 1e-11 × scale of it.
+TEST(RaySuite, ReferencesAgreeWithDenseSampling) {
+    constexpr std::size_t every = 37;
+    constexpr int samples = 20000;
+    constexpr double clearly_negative = -1e-12;
+    DoubleRayFunction h;
+    int sampled = 0, bracketed = 0, refined = 0;
+    const auto& rays = suite();
+    for (std::size_t i = 0; i < rays.size(); i += every) {
+        const SuiteRay& r = rays[i];
+        const double spacing = (r.span.t1 - r.span.t0) / samples, slack = 1e-12 * r.scale;
+        const auto at = [&](int j) { return j == samples ? r.span.t1 : r.span.t0 + j * spacing; };
+        int first_nonpositive = -1, first_negative = -1;
+        for (int j = 0; j <= samples && first_negative < 0; ++j) {
+            const double value = h(r, at(j));
+            if (value <= 0.0 && first_nonpositive < 0) first_nonpositive = j;
+            if (value < clearly_negative) first_negative = j;
+        }
+        ++sampled;
+        if (first_negative >= 0) {
+            ASSERT_TRUE(r.t_ref.has_value())
+                << "sampling finds f < 0 at t = " << at(first_negative) << ": " << describe(r);
+            EXPECT_LE(*r.t_ref, at(first_negative) + slack) << describe(r);
+        }
+        const bool resolvable =
+            r.kind == RefKind::Simple && dip_end(r) - *r.t_ref >= 3.0 * spacing && r.slope * spacing >= 1e-9;
+        if (!resolvable) continue;
+        ++bracketed;
+        ASSERT_GE(first_nonpositive, 0) << describe(r);
+        EXPECT_GE(*r.t_ref, at(first_nonpositive) - 2.0 * spacing) << describe(r);
+        EXPECT_LE(*r.t_ref, at(first_nonpositive) + slack) << describe(r);
+        if (first_nonpositive == 0 || r.slope < 0.01) continue;
+        double lo = at(first_nonpositive - 1), hi = at(first_nonpositive);
+        for (int k = 0; k < 100 && lo < hi; ++k) {
+            const double mid = 0.5 * (lo + hi);
+            if (mid <= lo || mid >= hi) break;
+            (h(r, mid) > 0.0 ? lo : hi) = mid;
+        }
+        ++refined;
+        EXPECT_NEAR(hi, *r.t_ref, 1e-11 * r.scale) << describe(r);
+    }
+    std::printf("dense sampling: %d rays sampled, %d simple roots bracketed, %d refined in doubles\n", sampled,
+                bracketed, refined);
+    EXPECT_GE(bracketed, 100);
+    EXPECT_GE(refined, 80);
+}
+
+struct TracerTally {
+    int hits = 0, misses = 0;
+    int grazes_passed = 0;  // a graze missed, or stepped over to a later root
+    int early_hits = 0;     // more than 2ε before the reference
+    int beyond_span = 0;    // a hit where the oracle proves no root in [t0, t1]
+};
+
+// The sphere tracer (ε = 1e-6 × scale) on every ray. Where the first root is
+// a crossing after which the ray stays inside for more than 4ε, it must
+// report a hit within 2ε of the reference: it never steps over the first root.
+// A graze — a touching ray, or a dip shorter than 4ε — may be passed; such
+// rays, hits before the reference, and hits on rays whose root lies a hair
+// past t1 (found by the 2ε look-ahead that confirms a hit) are counted and
+// printed.
+TEST(RaySuite, SphereTracerNeverSkipsTheFirstHit) {
+    std::map<std::string, std::pair<std::unique_ptr<Tape>, std::unique_ptr<SphereTracer>>> tracers;
+    std::map<std::string, TracerTally> tallies;
+    std::map<std::string, int> reported;
+    const auto report = [&](const std::string& what, const SuiteRay& r, std::optional<double> hit) {
+        if (++reported[what] <= 3)
+            std::printf("sphere tracer, %s: %s hit=%.17g\n", what.c_str(), describe(r).c_str(), hit.value_or(NAN));
+    };
+    for (const SuiteRay& r : suite()) {
+        auto& [tape, tracer] = tracers[r.surface];
+        const double eps = 1e-6 * r.scale, slack = 1e-12 * r.scale;
+        if (!tracer) {
+            tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
+            tracer = std::make_unique<SphereTracer>(*tape, SphereTraceSettings{.epsilon = eps});
+        }
+        TracerTally& tally = tallies[r.surface];
+        TraceCounters counters;
+        const std::optional<double> hit = tracer->first_hit(r.ray, r.span, counters);
+        if (hit) ++tally.hits;
+        if (!hit && r.t_ref) ++tally.misses;
+        if (!r.t_ref) {
+            if (hit) {
+                ++tally.beyond_span;
+                report(r.ray_class == "past_t1" ? "hit with the root a hair past t1"
+                                                : "hit where the oracle proves no root",
+                       r, hit);
+            }
+            continue;
+        }
+        // With no second root in the span, the ray is still inside at t1 (and
+        // the tracer's look-ahead reaches past t1): a crossing all the same.
+        const bool crossing = (r.kind == RefKind::Simple || r.kind == RefKind::Multiple) &&
+                              (!r.t_next || *r.t_next - *r.t_ref > 4.0 * eps);
+        const bool passed = !hit || *hit > *r.t_ref + 2.0 * eps + slack;
+        const bool early = hit && *hit < *r.t_ref - 2.0 * eps - slack;
+        if (crossing) {
+            EXPECT_FALSE(passed) << "stepped over the first root: " << describe(r) << " hit=" << hit.value_or(NAN);
+            EXPECT_FALSE(early) << "hit before the first root: " << describe(r) << " hit=" << hit.value_or(NAN);
+        } else if (passed) {
+            ++tally.grazes_passed;
+            report("graze passed", r, hit);
+        }
+        if (early) {
+            ++tally.early_hits;
+            report("hit before the reference", r, hit);
+        }
+    }
+    for (const auto& [surface, t] : tallies)
+        std::printf("sphere tracer on %-11s: %4d hits, %3d misses, %3d grazes passed, %d early, %2d beyond the span\n",
+                    surface.c_str(), t.hits, t.misses, t.grazes_passed, t.early_hits, t.beyond_span);
+}
+
+}  // namespace
+}  // namespace zeroset::test
