@@ -17,6 +17,7 @@
 #include "support/ray_suite.hpp"
 #include "support/ray_suite_surfaces.hpp"
 #include "zeroset/expr/evaluator.hpp"
+#include "zeroset/trace/root_finder.hpp"
 #include "zeroset/trace/sphere_tracer.hpp"
 
 namespace zeroset::test {
@@ -208,6 +209,72 @@ TEST(RaySuite, SphereTracerNeverSkipsTheFirstHit) {
         std::printf("sphere tracer on %-11s: %4d hits, %3d misses, %3d grazes passed, %d early, %2d beyond the span\n",
                     surface.c_str(), t.hits, t.misses, t.grazes_passed, t.early_hits, t.beyond_span);
 }
+
+}  // namespace
+}  // namespace zeroset::test
+
+namespace zeroset::test {
+namespace {
+
+struct StrictTally {
+    int rays = 0, exact = 0, numerically_zero_early = 0;
+    double worst_exact = 0.0;  // largest |t − t_ref| / scale among exact hits on well-conditioned roots
+};
+
+/// The guaranteed isolating methods on every ray of the suite:
+/// - never a miss: every ray with a root gets a hit;
+/// - never late: no hit beyond the first root by more than 1e-9 × scale — or,
+///   for a root where |H′| < 1e-6 (a near-double root of a grazing ray), by
+///   more than 1e-7 × scale: no evaluation of H in double precision places
+///   such a root better than about (rounding error of H) / |H′|;
+/// - otherwise exact, |t − t_ref| within that tolerance — except where a hit comes
+///   earlier (or on a ray with no root) at a place where H cannot be told
+///   from 0 in double precision: a ray grazing the surface closer than
+///   rounding can resolve. There, the enclosure of H over the finest segment
+///   at the hit must contain 0; such hits are counted and printed.
+void expect_strict(Method method) {
+    std::map<std::string, std::unique_ptr<Tape>> tapes;
+    std::map<std::string, StrictTally> tallies;
+    for (const SuiteRay& r : suite()) {
+        auto& tape = tapes[r.surface];
+        if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
+        RayFunction h(*tape);
+        h.set_ray(r.ray);
+        TraceCounters counters;
+        const RootFinderSettings settings = settings_for_scale(r.scale);
+        const HitResult hit = make_root_finder(method, *tape, settings)->first_hit(h, r.span, counters);
+        StrictTally& t = tallies[r.surface];
+        ++t.rays;
+        const bool well_conditioned = r.kind == RefKind::Simple && r.slope >= 1e-6;
+        const double tolerance = (well_conditioned ? 1e-9 : 1e-7) * r.scale;
+        if (r.t_ref && !hit.t) {
+            ADD_FAILURE() << method_name(method) << " missed: " << describe(r);
+            continue;
+        }
+        if (!hit.t) continue;  // no root, no hit
+        if (r.t_ref && *hit.t > *r.t_ref + tolerance) {
+            ADD_FAILURE() << method_name(method) << " hit after the first root: " << describe(r) << " hit=" << *hit.t;
+            continue;
+        }
+        if (r.t_ref && *hit.t >= *r.t_ref - tolerance) {
+            ++t.exact;
+            if (well_conditioned) t.worst_exact = std::max(t.worst_exact, std::abs(*hit.t - *r.t_ref) / r.scale);
+            continue;
+        }
+        ++t.numerically_zero_early;
+        const Interval there = h.enclose(*hit.t, *hit.t + settings.tangent_width, counters).v;
+        EXPECT_TRUE(there.contains(0.0)) << method_name(method) << " hit early where H is not 0: " << describe(r)
+                                         << " hit=" << *hit.t << " H in [" << there.lo << ", " << there.hi << "]";
+    }
+    for (const auto& [surface, t] : tallies)
+        std::printf("%-8s on %-11s: %4d rays, 0 misses, %4d exact (worst simple root %.1e x scale), %3d early where H is 0 "
+                    "to double precision\n",
+                    std::string(method_name(method)).c_str(), surface.c_str(), t.rays, t.exact, t.worst_exact,
+                    t.numerically_zero_early);
+}
+
+TEST(RaySuite, IntervalMethodNeverMissesAndIsExact) { expect_strict(Method::Interval); }
+TEST(RaySuite, LgMethodNeverMissesAndIsExact) { expect_strict(Method::Lg); }
 
 }  // namespace
 }  // namespace zeroset::test

@@ -6,15 +6,31 @@
 
 namespace zeroset {
 
+namespace {
+
+/// H over the segment by the mean-value form H(t_m) + H′[T]·(T − t_m): its
+/// overestimate shrinks with the square of the width where the plain
+/// enclosure's shrinks with the width, which is what rejects a ray passing
+/// a hair above the surface without bisecting it into millions of pieces.
+Interval mean_value_form(RayFunction& h, const Segment& s, const Interval& slope, TraceCounters& counters) {
+    const double tm = 0.5 * (s.a + s.b);
+    const Interval at_mid = h.enclose(tm, tm, counters).v;
+    return at_mid + slope * Interval(s.a - tm, s.b - tm);
+}
+
+}  // namespace
+
 HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) {
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
-    while (!segments.empty()) {
+    for (long visited = 0; !segments.empty(); ++visited) {
+        if (visited == settings_.max_segments) return HitStatus::Failed;
         const Segment s = segments.pop();
         const Jet<Interval> e = h.enclose(s.a, s.b, counters);
         if (settings_.log) settings_.log->interval_boxes.push_back({s.a, s.b, e.v.lo, e.v.hi});
         if (e.v.is_empty()) return HitStatus::Failed;  // H is undefined (NaN) over the segment
         if (!e.v.contains(0.0)) continue;               // Fig. 9, step 2: no root here
+        if (!mean_value_form(h, s, e.d1, counters).contains(0.0)) continue;
         if (!e.d1.is_empty() && !e.d1.contains(0.0)) {  // step 4: H is monotone
             if (const auto root = refine_sign_change(h, s.a, s.b, counters))
                 if (!visit(*root)) return HitStatus::Ok;

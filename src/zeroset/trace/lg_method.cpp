@@ -11,14 +11,21 @@ namespace zeroset {
 namespace {
 /// max |x| over the interval; unbounded when the enclosure was lost (empty).
 double bound_of(const Interval& x) { return x.is_empty() ? INFINITY : x.magnitude(); }
+/// min |x| over the interval (0 when it holds 0 or is empty).
+double least_of(const Interval& x) {
+    if (x.is_empty() || x.contains(0.0)) return 0.0;
+    return std::min(std::abs(x.lo), std::abs(x.hi));
+}
 }  // namespace
 
 HitStatus LgMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) {
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
-    while (!segments.empty()) {
+    for (long visited = 0; !segments.empty(); ++visited) {
+        if (visited == settings_.max_segments) return HitStatus::Failed;
         const Segment s = segments.pop();
-        const double tm = 0.5 * (s.a + s.b), r = 0.5 * (s.b - s.a);  // Fig. 11, step 1
+        const double tm = 0.5 * (s.a + s.b);                      // Fig. 11, step 1
+        const double r = std::max(tm - s.a, s.b - tm);             // exact half-width bound
         const Jet<Interval> e = h.enclose(s.a, s.b, counters);
         if (settings_.log) settings_.log->interval_boxes.push_back({s.a, s.b, e.v.lo, e.v.hi});
         if (e.v.is_empty()) return HitStatus::Failed;  // H is undefined (NaN) over the segment
@@ -27,10 +34,12 @@ HitStatus LgMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, 
         if (!e.v.contains(0.0)) continue;
         const double lip_h = bound_of(e.d1);   // L = Lip H on the segment
         const double lip_dh = bound_of(e.d2);  // step 2: G = Lip H′ on the segment
-        const Jet<double> at_mid = h.jet(tm, counters);
-        if (std::isnan(at_mid.v) || std::isnan(at_mid.d1)) return HitStatus::Failed;
-        if (std::abs(at_mid.v) > lip_h * r) continue;  // no root within L·r of t_m
-        if (std::abs(at_mid.d1) > lip_dh * r) {        // step 3: H is monotone
+        // H(t_m) and H′(t_m) as enclosures too, so rounding in them can never
+        // make the tests below claim more than is true.
+        const Jet<Interval> at_mid = h.enclose(tm, tm, counters);
+        if (at_mid.v.is_empty()) return HitStatus::Failed;
+        if (least_of(at_mid.v) > lip_h * r) continue;  // no root within L·r of t_m
+        if (least_of(at_mid.d1) > lip_dh * r) {        // step 3: H is monotone
             if (const auto root = refine_sign_change(h, s.a, s.b, counters))
                 if (!visit(*root)) return HitStatus::Ok;  // 3a: a single root
             continue;                                     // 3b: none

@@ -18,10 +18,10 @@ std::optional<double> SphereMethod::crossing(RayFunction& h, Span span, double s
         return std::nullopt;
     }
     if (!t) return std::nullopt;
-    // The surface is crossed in [t, t + 2ε]: refine to full precision.
+    // The surface is crossed in [t, t + 2ε]: refine to full precision. With
+    // no sign change before t1, the crossing lies just past the span.
     const double end = std::min(*t + 2.0 * settings_.sphere_epsilon, span.t1);
-    if (const auto root = refine_sign_change(h, *t, end, counters)) return root;
-    return t;
+    return refine_sign_change(h, *t, end, counters);
 }
 
 HitResult SphereMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {
