@@ -198,3 +198,24 @@ TEST(Renderer, ForwardDifferenceNormalsMatchAnalyticOnes) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Renderer, GuaranteedMethodsHitTheSamePixels) {
+    Scene scene = blinn_scene();
+    std::vector<RenderResult> results;
+    for (const Method m : {Method::Interval, Method::Lg, Method::Sphere}) {
+        RenderSettings s = small();
+        s.method = m;
+        results.push_back(render(scene, s));
+    }
+    for (std::size_t i = 1; i < results.size(); ++i) {
+        EXPECT_EQ(results[i].stats.hits, results[0].stats.hits) << i;
+        for (std::size_t p = 0; p < results[0].image.pixels.size(); ++p)
+            ASSERT_NEAR(results[i].image.pixels[p].x, results[0].image.pixels[p].x, 1e-3) << "method " << i << " pixel " << p;
+    }
+}
+
+}  // namespace
+}  // namespace zeroset
