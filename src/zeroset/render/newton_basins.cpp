@@ -7,7 +7,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstddef>
-#include <sstream>
 #include <thread>
 
 #include "zeroset/render/render_settings.hpp"
@@ -20,23 +19,15 @@ constexpr double converged_step = 1e-10;    // relative to max(1, |t|)
 constexpr double real_tolerance = 1e-8;     // |Im t| of a real root, relative
 constexpr double cluster_tolerance = 1e-6;  // real limits closer than this are one root, relative
 constexpr double escape_radius = 1e10;
-constexpr int max_image_side = 65536;
 constexpr int max_iteration_limit = 100000;
 
 double scale(Complex t) { return std::max(1.0, modulus(t)); }
 
 void check_settings(const Ray& ray, const BasinSettings& s) {
-    const auto check = [](int value, int low, int high, const char* what) {
-        if (value < low || value > high) {
-            std::ostringstream message;
-            message << what << " must be between " << low << " and " << high << ", got " << value;
-            throw RenderError(message.str());
-        }
-    };
-    check(s.width, 1, max_image_side, "width");
-    check(s.height, 1, max_image_side, "height");
-    check(s.max_iterations, 1, max_iteration_limit, "iterations");
-    check(s.threads, 0, 4096, "threads");
+    require_in_range(s.width, 1, max_image_side, "width");
+    require_in_range(s.height, 1, max_image_side, "height");
+    require_in_range(s.max_iterations, 1, max_iteration_limit, "iterations");
+    require_in_range(s.threads, 0, 4096, "threads");
     const ComplexRect& r = s.region;
     if (!(std::isfinite(r.re_min) && std::isfinite(r.re_max) && std::isfinite(r.im_min) && std::isfinite(r.im_max)))
         throw RenderError("the rectangle of the t-plane must have finite corners");

@@ -28,7 +28,14 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// The largest image side, in pixels, any renderer here accepts.
+inline constexpr int max_image_side = 65536;
+
 /// Checks sizes and counts; throws RenderError with a message naming the option.
 void validate(const RenderSettings& settings);
+
+/// Throws RenderError("WHAT must be between LOW and HIGH, got VALUE") unless
+/// low ≤ value ≤ high.
+void require_in_range(int value, int low, int high, const char* what);
 
 }  // namespace zeroset

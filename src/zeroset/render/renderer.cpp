@@ -20,7 +20,6 @@ namespace zeroset {
 namespace {
 
 constexpr int tile_size = 16;
-constexpr int max_image_side = 65536;
 constexpr int max_samples_per_pixel = 1024;
 
 struct Tile {
@@ -74,18 +73,18 @@ void check_camera(const Camera& camera) {
 
 }  // namespace
 
+void require_in_range(int value, int low, int high, const char* what) {
+    if (value >= low && value <= high) return;
+    std::ostringstream message;
+    message << what << " must be between " << low << " and " << high << ", got " << value;
+    throw RenderError(message.str());
+}
+
 void validate(const RenderSettings& s) {
-    const auto check = [](int value, int low, int high, const char* what) {
-        if (value < low || value > high) {
-            std::ostringstream message;
-            message << what << " must be between " << low << " and " << high << ", got " << value;
-            throw RenderError(message.str());
-        }
-    };
-    check(s.width, 1, max_image_side, "width");
-    check(s.height, 1, max_image_side, "height");
-    check(s.samples_per_pixel, 1, max_samples_per_pixel, "samples per pixel");
-    check(s.threads, 0, 4096, "threads");
+    require_in_range(s.width, 1, max_image_side, "width");
+    require_in_range(s.height, 1, max_image_side, "height");
+    require_in_range(s.samples_per_pixel, 1, max_samples_per_pixel, "samples per pixel");
+    require_in_range(s.threads, 0, 4096, "threads");
 }
 
 RenderResult render(const Scene& scene, const RenderSettings& settings) {

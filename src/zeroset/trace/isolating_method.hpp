@@ -1,6 +1,7 @@
-// IsolatingMethod: the methods that isolate roots by subdividing the span
-// (interval, LG). They differ only in how a segment is settled; first_hit and
-// all_hits are the same walk over the isolated roots.
+// IsolatingMethod: the methods that hand over their roots one by one, in
+// increasing t — by subdividing the span (interval, LG) or by sampling it
+// for brackets (regula falsi, bisection). first_hit and all_hits are the
+// same walk over those roots.
 #pragma once
 
 #include "zeroset/trace/root_finder.hpp"
@@ -17,7 +18,8 @@ protected:
     explicit IsolatingMethod(const RootFinderSettings& settings) : settings_(settings) {}
 
     /// Hands the roots in the span to `visit`, in increasing t, until it
-    /// returns false. Returns Failed where H is undefined (NaN), else NoHit.
+    /// returns false. Returns Failed where the search broke down (H undefined,
+    /// NaN, a budget spent), else NoHit.
     virtual HitStatus isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) = 0;
 
     RootFinderSettings settings_;

@@ -16,9 +16,9 @@ std::optional<double> SamplingMethod::refine(RayFunction& h, double a, double b,
     return r.t;
 }
 
-HitStatus SamplingMethod::visit_roots(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) const {
+HitStatus SamplingMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) {
     bool failed = false;
-    bool found = false;
+    bool stopped = false;
     auto value = [&](double t) { return h.value(t, counters); };
     for_each_sign_change(value, span.t0, span.t1, settings_.bracket_samples, [&](const Bracket& bracket) {
         const auto root = refine(h, bracket.lo, bracket.hi, counters);
@@ -26,32 +26,10 @@ HitStatus SamplingMethod::visit_roots(RayFunction& h, Span span, TraceCounters& 
             failed = true;
             return true;
         }
-        found = true;
-        return visit(*root);
+        stopped = !visit(*root);
+        return !stopped;
     });
-    if (found) return HitStatus::Ok;
-    return failed ? HitStatus::Failed : HitStatus::NoHit;
-}
-
-HitResult SamplingMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {
-    const double start = h.value(span.t0, counters);
-    if (std::isnan(start)) return {std::nullopt, HitStatus::Failed};
-    if (start <= 0.0) return {span.t0, HitStatus::Ok};  // the ray starts in the solid
-    std::optional<double> first;
-    auto take_first = [&first](double t) {
-        first = t;
-        return false;
-    };
-    const HitStatus status = visit_roots(h, span, counters, take_first);
-    return {first, status};
-}
-
-HitStatus SamplingMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
-    auto collect = [&hits](double t) {
-        hits.push_back(t);
-        return true;
-    };
-    return visit_roots(h, span, counters, collect);
+    return failed && !stopped ? HitStatus::Failed : HitStatus::NoHit;
 }
 
 }  // namespace zeroset

@@ -5,30 +5,26 @@
 // (a thin feature, a grazing ray) are missed. Not guaranteed.
 #pragma once
 
-#include "zeroset/trace/root_finder.hpp"
-#include "zeroset/trace/root_visitor.hpp"
+#include "zeroset/trace/isolating_method.hpp"
 
 namespace zeroset {
 
-class SamplingMethod : public RootFinder {
+class SamplingMethod : public IsolatingMethod {
 public:
     enum class Refinement { RegulaFalsi, Bisection };
 
     SamplingMethod(Refinement refinement, const RootFinderSettings& settings)
-        : refinement_(refinement), settings_(settings) {}
+        : IsolatingMethod(settings), refinement_(refinement) {}
 
-    HitResult first_hit(RayFunction& h, Span span, TraceCounters& counters) override;
-    HitStatus all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) override;
+protected:
+    /// Hands the refined root of each sampled bracket to `visit`, in order.
+    HitStatus isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) override;
 
 private:
-    /// Hands the refined root of each sampled bracket to `visit`, in order,
-    /// until it returns false.
-    HitStatus visit_roots(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) const;
     /// The root in a sign-change bracket, refined by this method's rule.
     std::optional<double> refine(RayFunction& h, double a, double b, TraceCounters& counters) const;
 
     Refinement refinement_;
-    RootFinderSettings settings_;
 };
 
 }  // namespace zeroset
