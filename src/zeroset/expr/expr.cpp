@@ -74,16 +74,20 @@ Expr Expr::intern(Op op, double value, int n, const Expr* a, const Expr* b) {
 
 ExprNode::~ExprNode() {
     // Operands whose last owner is this node are queued instead of destroyed
-    // here; the outermost destructor on the thread drains the queue.
-    thread_local std::vector<std::shared_ptr<const ExprNode>> pending;
+    // here; the outermost destructor on the thread drains the queue. The
+    // queue is reached through a plain pointer, never destroyed, so nodes
+    // held by static objects can still be released at program exit, after
+    // the thread's thread_local objects are gone.
+    using Queue = std::vector<std::shared_ptr<const ExprNode>>;
+    thread_local Queue* const pending = new Queue;
     thread_local bool draining = false;
-    if (a) pending.push_back(std::move(a));
-    if (b) pending.push_back(std::move(b));
+    if (a) pending->push_back(std::move(a));
+    if (b) pending->push_back(std::move(b));
     if (draining) return;
     draining = true;
-    while (!pending.empty()) {
-        std::shared_ptr<const ExprNode> next = std::move(pending.back());
-        pending.pop_back();
+    while (!pending->empty()) {
+        std::shared_ptr<const ExprNode> next = std::move(pending->back());
+        pending->pop_back();
         next.reset();  // may run ~ExprNode, which only queues
     }
     draining = false;

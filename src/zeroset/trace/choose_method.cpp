@@ -1,12 +1,12 @@
 // The rule behind `method auto`. Both candidates are guaranteed; which is
 // faster depends on the tape's size (measurements in docs/methods.md):
 // - on small tapes the interval method wins — one Jet<Interval> per segment
-//   isolates roots in few steps (default scene 800×600, one thread: 1.23 s
-//   against 1.68 s for sphere tracing; the ray suite: 29 µs per ray against
-//   323 µs);
+//   isolates roots in few steps (default scene 800×600, one thread: 1.19 s
+//   against 1.76 s for sphere tracing; the ray suite: 19 µs per ray against
+//   337 µs);
 // - on large models sphere tracing wins, because it walks tapes pruned to
 //   each segment's box, while the interval method evaluates the whole tape
-//   (bear.vm, 543 clauses, 120×120: 4.3 s against 7.6 s).
+//   (bear.vm, 543 clauses, 120×120: 3.2 s against 7.2 s).
 #include "zeroset/trace/choose_method.hpp"
 
 namespace zeroset {

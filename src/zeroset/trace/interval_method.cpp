@@ -14,7 +14,7 @@ namespace {
 /// a hair above the surface without bisecting it into millions of pieces.
 Interval mean_value_form(RayFunction& h, const Segment& s, const Interval& slope, TraceCounters& counters) {
     const double tm = 0.5 * (s.a + s.b);
-    const Interval at_mid = h.enclose(tm, tm, counters).v;
+    const Interval at_mid = h.enclose_value(tm, counters);
     return at_mid + slope * Interval(s.a - tm, s.b - tm);
 }
 
@@ -30,12 +30,12 @@ HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& coun
         if (settings_.log) settings_.log->interval_boxes.push_back({s.a, s.b, e.v.lo, e.v.hi});
         if (e.v.is_empty()) return HitStatus::Failed;  // H is undefined (NaN) over the segment
         if (!e.v.contains(0.0)) continue;               // Fig. 9, step 2: no root here
-        if (!mean_value_form(h, s, e.d1, counters).contains(0.0)) continue;
         if (!e.d1.is_empty() && !e.d1.contains(0.0)) {  // step 4: H is monotone
             if (const auto root = refine_sign_change(h, s.a, s.b, counters))
                 if (!visit(*root)) return HitStatus::Ok;
             continue;
         }
+        if (!mean_value_form(h, s, e.d1, counters).contains(0.0)) continue;  // a near miss
         if (s.b - s.a > settings_.tangent_width && segments.can_split(s)) {
             segments.split(s, s.a);  // step 5: divide and conquer, front half first
             continue;

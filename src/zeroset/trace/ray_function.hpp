@@ -13,7 +13,7 @@ namespace zeroset {
 
 class RayFunction {
 public:
-    explicit RayFunction(const Tape& tape) : point_(tape), jet_(tape), enclosure_(tape) {}
+    explicit RayFunction(const Tape& tape) : point_(tape), jet_(tape), value_enclosure_(tape), enclosure_(tape) {}
 
     void set_ray(const Ray& ray) { ray_ = ray; }
     [[nodiscard]] const Ray& ray() const { return ray_; }
@@ -30,6 +30,15 @@ public:
         Jet<double> j = evaluate_along_ray(jet_, ray_.origin, ray_.dir, t);
         j.v = checked(j.v, t, counters);
         return j;
+    }
+    /// An enclosure of H(t) at one t, free of rounding doubts (the point
+    /// x_o + t·x_d itself is enclosed, not rounded).
+    Interval enclose_value(double t, TraceCounters& counters) {
+        ++counters.interval_evaluations;
+        const Interval ti(t);
+        const auto coordinate = [&ti](double o, double d) { return Interval(o) + Interval(d) * ti; };
+        return value_enclosure_(coordinate(ray_.origin.x, ray_.dir.x), coordinate(ray_.origin.y, ray_.dir.y),
+                                coordinate(ray_.origin.z, ray_.dir.z));
     }
     /// Enclosures of H, H′ and H″ over t ∈ [a, b].
     Jet<Interval> enclose(double a, double b, TraceCounters& counters) {
@@ -59,6 +68,7 @@ private:
     Ray ray_{};
     Evaluator<double> point_;
     Evaluator<Jet<double>> jet_;
+    Evaluator<Interval> value_enclosure_;
     Evaluator<Jet<Interval>> enclosure_;
 };
 
