@@ -108,6 +108,24 @@ TEST(WorkedExample, SphereGivesTheSurveysQuadratic) {
         ASSERT_TRUE(first.t) << method_name(m);
         EXPECT_NEAR(*first.t, r1, 1e-12) << method_name(m);
     }
+    // The bracketing methods find both roots too (the sampling resolves them)…
+    for (const Method m : {Method::RegulaFalsi, Method::Bisection}) {
+        const std::vector<double> hits = s.all_hits(m);
+        ASSERT_EQ(hits.size(), 2u) << method_name(m);
+        EXPECT_NEAR(hits[0], r1, 1e-12) << method_name(m);
+        EXPECT_NEAR(hits[1], r2, 1e-12) << method_name(m);
+    }
+    // …and Newton finds each one from a start near it.
+    for (const double root : {r1, r2}) {
+        RayFunction h(s.tape);
+        h.set_ray(survey_ray);
+        RootFinderSettings settings = s.settings();
+        settings.newton_start = root + (root == r1 ? -0.1 : 0.1);
+        TraceCounters counters;
+        const HitResult r = make_root_finder(Method::Newton, s.tape, settings)->first_hit(h, s.span, counters);
+        ASSERT_TRUE(r.t) << hit_status_name(r.status);
+        EXPECT_NEAR(*r.t, root, 1e-12);
+    }
 }
 
 TEST(WorkedExample, BlinnBlendHasFourRootsAndEveryGuaranteedMethodFindsThem) {
