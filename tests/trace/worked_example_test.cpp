@@ -117,12 +117,12 @@ TEST(WorkedExample, SphereGivesTheSurveysQuadratic) {
     }
     // …and Newton finds each one from a start near it.
     for (const double root : {r1, r2}) {
-        RayFunction h(s.tape);
-        h.set_ray(survey_ray);
+        RayFunction along(s.tape);
+        along.set_ray(survey_ray);
         RootFinderSettings settings = s.settings();
         settings.newton_start = root + (root == r1 ? -0.1 : 0.1);
-        TraceCounters counters;
-        const HitResult r = make_root_finder(Method::Newton, s.tape, settings)->first_hit(h, s.span, counters);
+        TraceCounters spent;
+        const HitResult r = make_root_finder(Method::Newton, s.tape, settings)->first_hit(along, s.span, spent);
         ASSERT_TRUE(r.t) << hit_status_name(r.status);
         EXPECT_NEAR(*r.t, root, 1e-12);
     }
