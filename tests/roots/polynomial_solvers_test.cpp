@@ -1,0 +1,229 @@
+// The polynomial solvers of §3.4 (Sturm, Descartes/Bernstein, Laguerre) and
+// Yuksel's derivative-splitting solver, on the same polynomials with known
+// roots: random ones built from their roots, the survey's quadratic (eq. 11
+// with the digits of Figure 2's example), clusters, double roots, roots at
+// the ends of the range, no roots, and a Wilkinson-like degree 16.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "zeroset/roots/descartes.hpp"
+#include "zeroset/roots/fast_polynomial.hpp"
+#include "zeroset/roots/laguerre.hpp"
+#include "zeroset/roots/polynomial_roots.hpp"
+#include "zeroset/roots/sturm.hpp"
+
+namespace zeroset {
+namespace {
+
+using Solve = PolynomialRoots (*)(std::span<const double>, double, double, std::span<double>);
+
+struct Solver {
+    std::string name;
+    Solve solve;
+    bool guaranteed;
+};
+
+std::vector<Solver> solvers() {
+    return {{"sturm", sturm_roots, true},
+            {"descartes", descartes_roots, true},
+            {"fast", fast_polynomial_roots, true},
+            {"laguerre", laguerre_roots, false}};
+}
+
+/// Ascending coefficients of scale·Π(t − rᵢ).
+std::vector<double> from_roots(const std::vector<double>& roots, double scale = 1.0) {
+    std::vector<double> c{scale};
+    for (const double r : roots) {
+        std::vector<double> next(c.size() + 1, 0.0);
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            next[i + 1] += c[i];
+            next[i] -= r * c[i];
+        }
+        c = next;
+    }
+    return c;
+}
+
+std::vector<double> solve(const Solver& s, const std::vector<double>& c, double t0, double t1) {
+    std::array<double, max_polynomial_degree> out{};
+    const PolynomialRoots r = s.solve(c, t0, t1, out);
+    EXPECT_GT(r.evaluations, 0);
+    return {out.begin(), out.begin() + r.count};
+}
+
+double relative(double a, double b) { return std::abs(a - b) / std::max(1.0, std::abs(b)); }
+
+/// Every expected root is matched, in order, within tolerance (relative).
+void expect_roots(const std::vector<double>& got, std::vector<double> expected, double tolerance) {
+    std::sort(expected.begin(), expected.end());
+    ASSERT_EQ(got.size(), expected.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+        EXPECT_LE(relative(got[i], expected[i]), tolerance) << "root " << i << ": " << got[i] << " vs " << expected[i];
+    }
+}
+
+TEST(PolynomialSolvers, RandomWellSeparatedRoots) {
+    std::mt19937_64 rng(20240611);
+    std::uniform_real_distribution<double> root(-2.0, 2.0);
+    for (const Solver& s : solvers()) {
+        SCOPED_TRACE(s.name);
+        for (int degree = 2; degree <= 10; ++degree) {
+            for (int trial = 0; trial < 20; ++trial) {
+                std::vector<double> roots;
+                while (static_cast<int>(roots.size()) < degree) {
+                    const double r = root(rng);
+                    // Keep roots 0.05 apart so that each is well conditioned.
+                    if (std::all_of(roots.begin(), roots.end(), [r](double q) { return std::abs(q - r) > 0.05; })) {
+                        roots.push_back(r);
+                    }
+                }
+                std::vector<double> inside;
+                for (const double r : roots) {
+                    if (r >= -1.0 && r <= 1.5) inside.push_back(r);
+                }
+                SCOPED_TRACE(degree);
+                expect_roots(solve(s, from_roots(roots, 0.5 + trial), -1.0, 1.5), inside,
+                             s.guaranteed ? 1e-10 : 1e-8);
+            }
+        }
+    }
+}
+
+TEST(PolynomialSolvers, SurveyQuadratic) {
+    const std::vector<double> c{36.852421, -12.1476884, 1.00024084};
+    for (const Solver& s : solvers()) {
+        SCOPED_TRACE(s.name);
+        expect_roots(solve(s, c, 0.0, 10.0), {5.898392516686843, 6.246370938482615}, 1e-13);
+        const FirstPolynomialRoot first = first_root_with(s.solve, c, 0.0, 10.0);
+        EXPECT_TRUE(first.found);
+        EXPECT_LE(relative(first.t, 5.898392516686843), 1e-13);
+    }
+}
+
+TEST(PolynomialSolvers, ClusteredRootsAreBothFound) {
+    // Roots 1e-6 apart: each is determined to about 1e-10 by the coefficients.
+    const std::vector<double> roots{0.3, 0.3 + 1e-6, 0.7};
+    for (const Solver& s : solvers()) {
+        SCOPED_TRACE(s.name);
+        if (s.guaranteed) expect_roots(solve(s, from_roots(roots), 0.0, 1.0), roots, 1e-9);
+    }
+}
+
+TEST(PolynomialSolvers, DoubleRootsAreReported) {
+    const std::vector<std::vector<double>> cases{{0.4, 0.4}, {0.25, 0.6, 0.6}, {-0.5, 0.3, 0.3, 0.9, 1.2}};
+    for (const Solver& s : solvers()) {
+        SCOPED_TRACE(s.name);
+        for (const auto& roots : cases) {
+            const std::vector<double> got = solve(s, from_roots(roots), -1.0, 1.0);
+            // Each distinct root in range is within 1e-7 of a reported one.
+            for (const double r : roots) {
+                if (r > 1.0) continue;
+                const bool found = std::any_of(got.begin(), got.end(), [r](double t) { return relative(t, r) <= 1e-7; });
+                EXPECT_TRUE(found) << r;
+            }
+            for (const double t : got) {
+                const bool known = std::any_of(roots.begin(), roots.end(), [t](double r) { return relative(t, r) <= 1e-7; });
+                EXPECT_TRUE(known) << t;
+            }
+        }
+    }
+}
+
+TEST(PolynomialSolvers, RootsAtTheEndsOfTheRange) {
+    const std::vector<double> roots{0.25, 0.5, 1.0};
+    for (const Solver& s : solvers()) {
+        SCOPED_TRACE(s.name);
+        expect_roots(solve(s, from_roots(roots), 0.25, 1.0), roots, 1e-12);
+        const FirstPolynomialRoot first = first_root_with(s.solve, from_roots(roots), 0.25, 1.0);
+        EXPECT_TRUE(first.found);
+        EXPECT_LE(relative(first.t, 0.25), 1e-15);
+    }
+}
+
+TEST(PolynomialSolvers, NoRoots) {
+    for (const Solver& s : solvers()) {
+        SCOPED_TRACE(s.name);
+        // (t² + 1)(t − 3): one real root, outside [−2, 2].
+        EXPECT_TRUE(solve(s, {-3.0, 1.0, -3.0, 1.0}, -2.0, 2.0).empty());
+        // A near miss: (t − 0.5)² + 1e-4.
+        EXPECT_TRUE(solve(s, {0.2501, -1.0, 1.0}, 0.0, 1.0).empty());
+        EXPECT_FALSE(first_root_with(s.solve, std::vector<double>{1.0, 0.0, 1.0}, -5.0, 5.0).found);
+        // Constants, and zero leading coefficients that are dropped.
+        std::array<double, 4> out{};
+        EXPECT_EQ(s.solve(std::vector<double>{2.0}, -1.0, 1.0, out).count, 0);
+        EXPECT_EQ(s.solve(std::vector<double>{-0.5, 1.0, 0.0, 0.0}, 0.0, 1.0, out).count, 1);
+        EXPECT_DOUBLE_EQ(out[0], 0.5);
+    }
+}
+
+TEST(PolynomialSolvers, WilkinsonLikeDegree16OnASubrange) {
+    // Π(t − k/16), k = 1 … 16: ill-conditioned in the monomial basis (the
+    // middle roots move by ~1e-9 under rounding of the coefficients).
+    std::vector<double> roots;
+    for (int k = 1; k <= 16; ++k) roots.push_back(k / 16.0);
+    const std::vector<double> c = from_roots(roots);
+    std::vector<double> inside;
+    for (const double r : roots) {
+        if (r > 0.2 && r < 0.8) inside.push_back(r);
+    }
+    for (const Solver& s : solvers()) {
+        SCOPED_TRACE(s.name);
+        if (s.guaranteed) expect_roots(solve(s, c, 0.2, 0.8), inside, 1e-6);
+    }
+}
+
+TEST(PolynomialSolvers, FirstRootIsTheSmallest) {
+    const std::vector<double> c = from_roots({0.9, 0.1, 0.5, 3.0});
+    for (const Solver& s : solvers()) {
+        SCOPED_TRACE(s.name);
+        const FirstPolynomialRoot r = first_root_with(s.solve, c, 0.0, 1.0);
+        EXPECT_TRUE(r.found);
+        EXPECT_LE(relative(r.t, 0.1), 1e-12);
+    }
+}
+
+TEST(PolynomialSolvers, FirstRootAgreesWithAllRoots) {
+    // Asking for one root stops the guaranteed solvers early; the answer
+    // must still be the smallest of all the roots.
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> root(0.0, 1.0);
+    for (const Solver& s : solvers()) {
+        SCOPED_TRACE(s.name);
+        for (int trial = 0; trial < 200; ++trial) {
+            std::vector<double> roots(static_cast<std::size_t>(2 + trial % 7));
+            for (double& r : roots) r = root(rng);
+            const std::vector<double> c = from_roots(roots, 1.0 + trial);
+            const std::vector<double> all = solve(s, c, 0.1, 0.9);
+            const FirstPolynomialRoot first = first_root_with(s.solve, c, 0.1, 0.9);
+            EXPECT_EQ(first.found, !all.empty());
+            if (!all.empty()) {
+                EXPECT_EQ(first.t, all.front());
+            }
+        }
+    }
+}
+
+TEST(PolynomialSolvers, RejectsBadInput) {
+    const std::vector<double> too_high(40, 1.0);
+    std::array<double, 4> out{};
+    for (const Solver& s : solvers()) {
+        EXPECT_THROW(s.solve(too_high, 0.0, 1.0, out), std::invalid_argument);
+        EXPECT_THROW(s.solve(std::vector<double>{1.0, 1.0}, 1.0, 0.0, out), std::invalid_argument);
+    }
+}
+
+TEST(Horner, ValueAndDerivativeInOnePass) {
+    const std::vector<double> c{1.0, -3.0, 0.0, 2.0};  // 2t³ − 3t + 1
+    const ValueAndDerivative v = horner(c, 1.5);
+    EXPECT_DOUBLE_EQ(v.value, 2.0 * 3.375 - 4.5 + 1.0);
+    EXPECT_DOUBLE_EQ(v.derivative, 6.0 * 2.25 - 3.0);
+}
+
+}  // namespace
+}  // namespace zeroset
