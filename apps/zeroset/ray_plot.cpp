@@ -20,6 +20,7 @@ std::string method_colour(Method m) {
         case Method::Sphere: return "#009E73";
         case Method::Interval: return "#0072B2";
         case Method::Lg: return "#CC79A7";
+        case Method::Polynomial: return "#882255";
         case Method::Newton: return "#D55E00";
         case Method::RegulaFalsi: return "#E69F00";
         case Method::Bisection: return "#56B4E9";

@@ -35,8 +35,11 @@ Options:
   --spp N             samples per pixel, stratified (default: the scene's, else 1)
   --threads N         render threads (default: all cores)
   --method M          intersect every object with method M instead of its own:
-                      auto, sphere, interval, lg, newton, regula_falsi, bisection
-                      (see docs/methods.md)
+                      auto, sphere, interval, lg, polynomial, newton,
+                      regula_falsi, bisection (see docs/methods.md)
+  --solver S          the polynomial method's root solver for every object:
+                      closed, sturm, descartes, laguerre, fast (default: the
+                      object's, else fast)
   -q, --quiet         no progress bar and no summary line
   -h, --help          this text
 
@@ -47,7 +50,8 @@ A progress bar is drawn on stderr when it is a terminal; a one-line summary
 }  // namespace
 
 int render_command(const std::vector<std::string>& args) {
-    const Options options(args, {"-o", "--output", "--width", "--height", "--spp", "--threads", "--method"},
+    const Options options(args, {"-o", "--output", "--width", "--height", "--spp", "--threads", "--method",
+                                 "--solver"},
                           {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(render_usage, stdout);
@@ -72,6 +76,10 @@ int render_command(const std::vector<std::string>& args) {
     if (const auto name = options.value("--method")) {
         settings.method = method_from_name(*name);
         if (!settings.method) throw UsageError("unknown method '" + *name + "' (try zeroset render --help)");
+    }
+    if (const auto name = options.value("--solver")) {
+        settings.solver = polynomial_solver_from_name(*name);
+        if (!settings.solver) throw UsageError("unknown polynomial solver '" + *name + "' (try zeroset render --help)");
     }
     validate(settings);
 

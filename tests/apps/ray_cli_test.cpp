@@ -127,7 +127,10 @@ TEST_F(RayCli, SurveyRayGivesTheFourRootsFromEveryGuaranteedMethod) {
     // The ray clipped to box((-2.4, -1.2, -1.2), (2.4, 1.2, 1.2)): x enters at -2.4 and leaves at 2.4.
     EXPECT_NEAR(std::stod(ray.t0), (-2.4 + 4.905) / 0.981, 1e-12);
     EXPECT_NEAR(std::stod(ray.t1), (2.4 + 4.905) / 0.981, 1e-12);
-    EXPECT_EQ(ray.order, (std::vector<std::string>{"auto", "sphere", "interval", "lg", "newton", "regula_falsi", "bisection"}));
+    EXPECT_EQ(ray.order, (std::vector<std::string>{"auto", "sphere", "interval", "lg", "polynomial", "newton",
+                                                   "regula_falsi", "bisection"}));
+    // Blinn's blend is not a polynomial: that method cannot run, and says why.
+    EXPECT_EQ(ray.methods.at("polynomial").status, "failed");
     EXPECT_NE(ray.methods.at("auto").resolved, "auto");
     for (const char* name : {"interval", "lg", "sphere"}) {
         const MethodEntry& m = ray.methods.at(name);
@@ -219,8 +222,9 @@ TEST_F(RayCli, RayMissingTheBoundsHasNoSpanAndNoHits) {
     ASSERT_EQ(rays.size(), 1u);
     EXPECT_EQ(rays[0].t0, "None");
     EXPECT_EQ(rays[0].t1, "None");
-    EXPECT_EQ(rays[0].methods.size(), 7u);
+    EXPECT_EQ(rays[0].methods.size(), 8u);
     for (const auto& [name, m] : rays[0].methods) {
+        if (name == "polynomial") continue;  // Blinn's blend is not a polynomial: that method fails
         EXPECT_EQ(m.status, "no_hit") << name;
         EXPECT_EQ(m.first_hit, "None") << name;
         EXPECT_TRUE(m.hits.empty()) << name;

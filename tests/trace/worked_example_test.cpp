@@ -115,6 +115,19 @@ TEST(WorkedExample, SphereGivesTheSurveysQuadratic) {
         EXPECT_NEAR(hits[0], r1, 1e-12) << method_name(m);
         EXPECT_NEAR(hits[1], r2, 1e-12) << method_name(m);
     }
+    // The polynomial method, with every solver, finds them from F(t)'s exact coefficients.
+    for (const PolynomialSolver solver : all_polynomial_solvers()) {
+        RayFunction along(s.tape);
+        along.set_ray(survey_ray);
+        RootFinderSettings settings = s.settings();
+        settings.polynomial_solver = solver;
+        std::vector<double> hits;
+        TraceCounters spent;
+        make_root_finder(Method::Polynomial, s.tape, settings)->all_hits(along, s.span, hits, spent);
+        ASSERT_EQ(hits.size(), 2u) << polynomial_solver_name(solver);
+        EXPECT_NEAR(hits[0], r1, 1e-12) << polynomial_solver_name(solver);
+        EXPECT_NEAR(hits[1], r2, 1e-12) << polynomial_solver_name(solver);
+    }
     // …and Newton finds each one from a start near it.
     for (const double root : {r1, r2}) {
         RayFunction along(s.tape);

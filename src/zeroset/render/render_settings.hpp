@@ -17,6 +17,8 @@ struct RenderSettings {
     int threads = 0;  // 0: all hardware threads
     /// When given, every object is intersected with this method instead of its own.
     std::optional<Method> method;
+    /// When given, the `polynomial` method's solver for every object.
+    std::optional<PolynomialSolver> solver;
     /// Called after every finished tile with (tiles done, tiles in all), from
     /// one thread at a time.
     std::function<void(int, int)> on_progress;

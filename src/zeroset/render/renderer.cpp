@@ -92,7 +92,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     check_camera(scene.camera);
     const auto start = std::chrono::steady_clock::now();
 
-    const PreparedScene prepared(scene, settings.method);
+    const PreparedScene prepared(scene, settings.method, settings.solver);
     const CameraRays camera(scene.camera, settings.width, settings.height);
     const std::vector<Tile> tiles = make_tiles(settings.width, settings.height);
     const int thread_count = settings.threads > 0

@@ -7,7 +7,7 @@
 
 namespace zeroset {
 
-PreparedScene::PreparedScene(const Scene& scene, std::optional<Method> method)
+PreparedScene::PreparedScene(const Scene& scene, std::optional<Method> method, std::optional<PolynomialSolver> solver)
     : scene_(&scene), lights_(scene.lights) {
     if (lights_.empty()) lights_.push_back({Light::Kind::Point, scene.camera.from, {}, {1.0, 1.0, 1.0}, true});
     objects_.reserve(scene.objects.size());
@@ -15,7 +15,9 @@ PreparedScene::PreparedScene(const Scene& scene, std::optional<Method> method)
         Tape tape(object.surface, SlotLayout::OnePerValue);
         const Box3 box = object.bounds.enclosing_box();
         const Method resolved = resolve_method(method.value_or(object.method), tape);
-        objects_.push_back({&object, std::move(tape), box, resolved, settings_for_scale(box.diagonal())});
+        RootFinderSettings settings = settings_for_scale(box.diagonal());
+        settings.polynomial_solver = solver.value_or(object.solver);
+        objects_.push_back({&object, std::move(tape), box, resolved, settings});
     }
 }
 

@@ -25,8 +25,9 @@ struct PreparedObject {
 
 class PreparedScene {
 public:
-    /// `method`, when given, replaces every object's own method.
-    explicit PreparedScene(const Scene& scene, std::optional<Method> method = std::nullopt);
+    /// `method` and `solver`, when given, replace every object's own.
+    explicit PreparedScene(const Scene& scene, std::optional<Method> method = std::nullopt,
+                           std::optional<PolynomialSolver> solver = std::nullopt);
 
     [[nodiscard]] const Scene& scene() const { return *scene_; }
     [[nodiscard]] const std::vector<PreparedObject>& objects() const { return objects_; }

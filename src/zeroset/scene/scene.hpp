@@ -54,6 +54,7 @@ struct Object {
     Expr surface;  // f(x, y, z): negative inside, zero on the surface
     Bounds bounds = default_object_bounds();
     Method method = Method::Auto;
+    PolynomialSolver solver = PolynomialSolver::Fast;  // for Method::Polynomial
     NormalMode normals = NormalMode::Analytic;
     Material material;
 };

@@ -20,7 +20,7 @@ constexpr std::array<std::string_view, 8> statement_names{"image",   "camera", "
 constexpr std::array<std::string_view, 3> image_keys{"width", "height", "spp"};
 constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};
 constexpr std::array<std::string_view, 4> light_keys{"from", "direction", "color", "shadows"};
-constexpr std::array<std::string_view, 5> object_keys{"surface", "bounds", "method", "normals", "material"};
+constexpr std::array<std::string_view, 6> object_keys{"surface", "bounds", "method", "solver", "normals", "material"};
 constexpr std::array<std::string_view, 5> material_keys{"color", "ambient", "diffuse", "specular", "shininess"};
 
 constexpr int max_image_size = 65536;
@@ -206,6 +206,8 @@ void SceneParser::object(const Token& keyword) {
             object.bounds = bounds();
         } else if (key.text == "method") {
             object.method = method();
+        } else if (key.text == "solver") {
+            object.solver = polynomial_solver();
         } else if (key.text == "normals") {
             object.normals = normal_mode();
         } else {
@@ -265,23 +267,27 @@ Bounds SceneParser::bounds() {
     return Bounds::make_sphere(center, radius);
 }
 
-Method SceneParser::method() {
-    const std::vector<std::string_view> names = method_names();
+const Token& SceneParser::choice(std::string_view what, std::span<const std::string_view> names) {
     const std::string expected = join_words(names, "or");
-    if (!in_->at(TokenKind::Name)) in_->fail_expected("a method (" + expected + ")");
+    if (!in_->at(TokenKind::Name)) in_->fail_expected("a " + std::string(what) + " (" + expected + ")");
     const Token& name = in_->next();
-    if (const auto m = method_from_name(name.text)) return *m;
-    in_->fail(name.where, "unknown method '" + std::string(name.text) + "' (expected " + expected + ")");
+    if (std::ranges::find(names, name.text) == names.end())
+        in_->fail(name.where, "unknown " + std::string(what) + " '" + std::string(name.text) + "' (expected " + expected + ")");
+    return name;
+}
+
+Method SceneParser::method() { return *method_from_name(choice("method", method_names()).text); }
+
+PolynomialSolver SceneParser::polynomial_solver() {
+    std::vector<std::string_view> names;
+    for (const PolynomialSolver s : all_polynomial_solvers()) names.push_back(polynomial_solver_name(s));
+    return *polynomial_solver_from_name(choice("polynomial solver", names).text);
 }
 
 NormalMode SceneParser::normal_mode() {
     const std::array<std::string_view, 2> names{normal_mode_name(NormalMode::Analytic),
                                                 normal_mode_name(NormalMode::ForwardDifference)};
-    const std::string expected = join_words(names, "or");
-    if (!in_->at(TokenKind::Name)) in_->fail_expected("a normal mode (" + expected + ")");
-    const Token& name = in_->next();
-    if (const auto mode = normal_mode_from_name(name.text)) return *mode;
-    in_->fail(name.where, "unknown normal mode '" + std::string(name.text) + "' (expected " + expected + ")");
+    return *normal_mode_from_name(choice("normal mode", names).text);
 }
 
 void SceneParser::block(const Token& keyword, std::span<const std::string_view> keys,

@@ -47,7 +47,10 @@ private:
     void object(const Token& keyword);
     Material material(const Token& keyword);
     Bounds bounds();
+    /// A name from `names` (the error lists them); `what` names the choice in messages.
+    const Token& choice(std::string_view what, std::span<const std::string_view> names);
     Method method();
+    PolynomialSolver polynomial_solver();
     NormalMode normal_mode();
 
     /// Reads `{ key value … }`: keys from `keys`, each at most once, in any

@@ -1,5 +1,7 @@
-// The rule behind `method auto`. Both candidates are guaranteed; which is
-// faster depends on the tape's size (measurements in docs/methods.md):
+// The rule behind `method auto`. A polynomial surface (degree ≤ 32) gets the
+// polynomial method: exact coefficients of F(t) and a root solver. Otherwise
+// both candidates are guaranteed; which is faster depends on the tape's size
+// (measurements in docs/methods.md):
 // - on small tapes the interval method wins — one Jet<Interval> per segment
 //   isolates roots in few steps (default scene 800×600, one thread: 1.19 s
 //   against 1.76 s for sphere tracing; the ray suite: 19 µs per ray against
@@ -8,6 +10,8 @@
 //   each segment's box, while the interval method evaluates the whole tape
 //   (bear.vm, 543 clauses, 120×120: 3.2 s against 7.2 s).
 #include "zeroset/trace/choose_method.hpp"
+
+#include "zeroset/expr/ray_polynomial.hpp"
 
 namespace zeroset {
 
@@ -18,6 +22,8 @@ constexpr std::size_t large_tape = 200;
 
 Method resolve_method(Method requested, const Tape& tape) {
     if (requested != Method::Auto) return requested;
+    const int degree = polynomial_degree(tape);
+    if (degree >= 1 && degree <= Polynomial::max_degree) return Method::Polynomial;  // exact F(t), survey §3.4
     return tape.clauses().size() > large_tape ? Method::Sphere : Method::Interval;
 }
 

@@ -6,13 +6,36 @@
 namespace zeroset {
 
 namespace {
-constexpr std::array methods{Method::Auto,   Method::Sphere,      Method::Interval, Method::Lg,
-                             Method::Newton, Method::RegulaFalsi, Method::Bisection};
+constexpr std::array methods{Method::Auto,       Method::Sphere, Method::Interval,    Method::Lg,
+                             Method::Polynomial, Method::Newton, Method::RegulaFalsi, Method::Bisection};
+constexpr std::array solvers{PolynomialSolver::Closed, PolynomialSolver::Sturm, PolynomialSolver::Descartes,
+                             PolynomialSolver::Laguerre, PolynomialSolver::Fast};
 }  // namespace
 
 std::span<const Method> all_methods() { return methods; }
 
-bool is_guaranteed(Method m) { return m == Method::Sphere || m == Method::Interval || m == Method::Lg; }
+bool is_guaranteed(Method m) {
+    return m == Method::Sphere || m == Method::Interval || m == Method::Lg || m == Method::Polynomial;
+}
+
+std::span<const PolynomialSolver> all_polynomial_solvers() { return solvers; }
+
+std::optional<PolynomialSolver> polynomial_solver_from_name(std::string_view name) {
+    for (const PolynomialSolver s : solvers)
+        if (polynomial_solver_name(s) == name) return s;
+    return std::nullopt;
+}
+
+std::string_view polynomial_solver_name(PolynomialSolver s) {
+    switch (s) {
+        case PolynomialSolver::Closed: return "closed";
+        case PolynomialSolver::Sturm: return "sturm";
+        case PolynomialSolver::Descartes: return "descartes";
+        case PolynomialSolver::Laguerre: return "laguerre";
+        case PolynomialSolver::Fast: return "fast";
+    }
+    return "?";
+}
 
 std::optional<Method> method_from_name(std::string_view name) {
     for (const Method m : methods)
@@ -26,6 +49,7 @@ std::string_view method_name(Method m) {
         case Method::Sphere: return "sphere";
         case Method::Interval: return "interval";
         case Method::Lg: return "lg";
+        case Method::Polynomial: return "polynomial";
         case Method::Newton: return "newton";
         case Method::RegulaFalsi: return "regula_falsi";
         case Method::Bisection: return "bisection";

@@ -8,13 +8,20 @@
 
 namespace zeroset {
 
-enum class Method { Auto, Sphere, Interval, Lg, Newton, RegulaFalsi, Bisection };
+enum class Method { Auto, Sphere, Interval, Lg, Polynomial, Newton, RegulaFalsi, Bisection };
 
 /// Every method, `auto` first, in the order help texts list them.
 std::span<const Method> all_methods();
 /// True for the methods that never miss the first root of a function the
-/// evaluator can bound: interval, lg and sphere.
+/// evaluator can bound: interval, lg, sphere and (on polynomial surfaces) polynomial.
 bool is_guaranteed(Method m);
+
+/// The root solvers of the `polynomial` method (survey §3.4).
+enum class PolynomialSolver { Closed, Sturm, Descartes, Laguerre, Fast };
+
+std::span<const PolynomialSolver> all_polynomial_solvers();
+std::optional<PolynomialSolver> polynomial_solver_from_name(std::string_view name);
+std::string_view polynomial_solver_name(PolynomialSolver s);
 
 /// How surface normals are computed: the exact gradient (eq. 33) or forward
 /// differences (eq. 34).

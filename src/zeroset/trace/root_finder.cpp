@@ -7,6 +7,7 @@
 #include "zeroset/trace/interval_method.hpp"
 #include "zeroset/trace/lg_method.hpp"
 #include "zeroset/trace/newton_method.hpp"
+#include "zeroset/trace/polynomial_method.hpp"
 #include "zeroset/trace/sampling_method.hpp"
 #include "zeroset/trace/sphere_method.hpp"
 
@@ -35,6 +36,7 @@ std::unique_ptr<RootFinder> make_root_finder(Method method, const Tape& tape, co
         case Method::Sphere: return std::make_unique<SphereMethod>(tape, settings);
         case Method::Interval: return std::make_unique<IntervalMethod>(settings);
         case Method::Lg: return std::make_unique<LgMethod>(settings);
+        case Method::Polynomial: return std::make_unique<PolynomialMethod>(tape, settings);
         case Method::Newton: return std::make_unique<NewtonMethod>(settings);
         case Method::RegulaFalsi: return std::make_unique<SamplingMethod>(SamplingMethod::Refinement::RegulaFalsi, settings);
         case Method::Bisection: return std::make_unique<SamplingMethod>(SamplingMethod::Refinement::Bisection, settings);

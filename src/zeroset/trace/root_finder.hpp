@@ -55,6 +55,8 @@ struct RootFinderSettings {
     /// Newton's start; the span's t0 when absent.
     std::optional<double> newton_start;
     int newton_max_iterations = 64;
+    /// The `polynomial` method's solver (closed forms fall back to Sturm above degree 4).
+    PolynomialSolver polynomial_solver = PolynomialSolver::Fast;
     MethodLog* log = nullptr;
 };
 
