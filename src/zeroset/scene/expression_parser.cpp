@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "zeroset/scene/algebraic_surfaces.hpp"
+#include "zeroset/scene/constant_value.hpp"
 #include "zeroset/scene/file_text.hpp"
 #include "zeroset/scene/wording.hpp"
 
@@ -154,7 +156,7 @@ private:
         const std::string_view text = token.text;
         if (const auto value = builtin_value(text)) return *value;
         if (const Binding* binding = context_.scope.find(text)) return binding->value;
-        if (find_function(text) || text == model_function)
+        if (find_function(text) || text == model_function || find_algebraic_surface(text))
             in_.fail(token.where, "'" + std::string(text) + "' is a function: call it as " + std::string(text) + "(...)");
         in_.fail(token.where, "unknown identifier '" + std::string(text) + "'");
     }
@@ -183,6 +185,7 @@ private:
 
     Value call(const Token& name) {
         if (name.text == model_function) return model(name);
+        if (const AlgebraicSurface* surface = find_algebraic_surface(name.text)) return algebraic(name, *surface);
         const Function* function = find_function(name.text);
         if (!function) {
             const bool is_value = context_.scope.find(name.text) || builtin_value(name.text);
@@ -211,6 +214,46 @@ private:
                                      std::to_string(count) + (count == 1 ? " was" : " were") + " given");
         }
         return function->apply(args);
+    }
+
+    /// A named algebraic surface: constant parameters, then optionally the
+    /// point (a vector) to evaluate it at — algebraic_surfaces.hpp.
+    Value algebraic(const Token& name, const AlgebraicSurface& surface) {
+        const Nesting nesting(*this, name);
+        in_.next();  // '('
+        std::vector<Value> args;
+        std::vector<SourceLocation> starts;
+        if (!in_.accept(TokenKind::RightParen)) {
+            do {
+                starts.push_back(in_.peek().where);
+                args.push_back(expression());
+            } while (in_.accept(TokenKind::Comma));
+            if (!in_.accept(TokenKind::RightParen)) in_.fail_expected("',' or ')'");
+        }
+        const std::string fn(name.text);
+        const std::string call_it = "; call it as " + signature(surface);
+        std::optional<ExprVector> point;
+        if (!args.empty() && args.back().is_vector()) {
+            point = args.back().vector();
+            args.pop_back();
+        }
+        for (std::size_t i = 0; i < args.size(); ++i) {
+            if (args[i].is_vector())
+                in_.fail(starts[i], fn + " takes the point (a vector) only as its last argument, but argument " +
+                                        std::to_string(i + 1) + " is a vector" + call_it);
+        }
+        const std::size_t most = surface.parameters.size();
+        if (args.size() > most)
+            in_.fail(name.where, fn + " takes at most " + plural(most, "number") + " and a point, but " +
+                                     std::to_string(args.size()) + (args.size() == 1 ? " number was" : " numbers were") +
+                                     " given" + call_it);
+        std::vector<double> values;
+        for (std::size_t i = 0; i < args.size(); ++i)
+            values.push_back(constant_number(in_, args[i], starts[i],
+                                             fn + " parameter " + std::string(surface.parameters[i].name)));
+        const std::string problem = surface.check(with_defaults(surface, values));
+        if (!problem.empty()) in_.fail(name.where, fn + ": " + problem + call_it);
+        return build_algebraic_surface(surface, values, point.value_or(ExprVector{var_x(), var_y(), var_z()}));
     }
 
     /// model("file.vm"): a fidget .vm model, its path relative to this scene file.
@@ -280,7 +323,8 @@ Value parse_expression(TokenStream& in, const ExpressionContext& context) {
 }
 
 bool is_builtin_name(std::string_view name) {
-    return builtin_value(name) || name == model_function || find_function(name) != nullptr;
+    return builtin_value(name) || name == model_function || find_function(name) != nullptr ||
+           find_algebraic_surface(name) != nullptr;
 }
 
 }  // namespace zeroset
