@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "support/temp_dir.hpp"
+#include "support/cli_test.hpp"
 #include "zeroset/io/image_reader.hpp"
 #include "zeroset/render/newton_basins.hpp"
 
@@ -21,29 +21,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-    int status;
-    std::string err;
-};
+using zeroset::test::Outcome;
 
-class BasinsCli : public ::testing::Test {
-protected:
-    /// Runs `zeroset ARGS` in the temp directory, capturing stderr outside it.
-    Outcome run(const std::string& args) const {
-        const fs::path err = logs_ / "stderr.txt";
-        const std::string command = "cd '" + dir_.path().string() + "' && '" ZEROSET_BINARY "' " + args +
-                                    " > /dev/null 2> '" + err.string() + "'";
-        const int raw = std::system(command.c_str());
-        std::ifstream in(err);
-        std::stringstream text;
-        text << in.rdbuf();
-        fs::remove(err);
-        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
-    }
-
-    zeroset::test::TempDir dir_;
-    zeroset::test::TempDir logs_;
-};
+class BasinsCli : public zeroset::test::CliTest {};
 
 /// Pixel counts per class: [0] black, [1] white, [2 + i] shades of basin colour i.
 std::array<int, 12> classify(const zeroset::Image& image) {

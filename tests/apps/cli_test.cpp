@@ -11,41 +11,22 @@
 #include <sstream>
 #include <string>
 
-#include "support/temp_dir.hpp"
+#include "support/cli_test.hpp"
 #include "zeroset/io/image_reader.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-    int status;
-    std::string err;
-};
+using zeroset::test::Outcome;
 
-class Cli : public ::testing::Test {
+class Cli : public zeroset::test::CliTest {
 protected:
-    /// Runs `zeroset ARGS` in the temp directory, capturing stderr (kept
-    /// outside it, so failures can be checked to leave nothing behind).
-    Outcome run(const std::string& args) const {
-        const fs::path err = logs_ / "stderr.txt";
-        const std::string command = "cd '" + dir_.path().string() + "' && '" ZEROSET_BINARY "' " + args +
-                                    " > /dev/null 2> '" + err.string() + "'";
-        const int raw = std::system(command.c_str());
-        std::ifstream in(err);
-        std::stringstream text;
-        text << in.rdbuf();
-        fs::remove(err);
-        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
-    }
-
     fs::path write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
 
     /// Files in the temp directory (nothing may be left behind by a failure).
     [[nodiscard]] std::size_t file_count() const { return dir_.entries().size(); }
 
-    zeroset::test::TempDir dir_;
-    zeroset::test::TempDir logs_;
 };
 
 double coverage(const zeroset::Image& image) {

@@ -16,17 +16,14 @@
 #include <string>
 #include <vector>
 
-#include "support/temp_dir.hpp"
+#include "support/cli_test.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-    int status;
-    std::string out;
-    std::string err;
-};
+using zeroset::test::Outcome;
+using zeroset::test::read_text;
 
 /// One method's entry of a JSON report, as Python read it.
 struct MethodEntry {
@@ -40,13 +37,6 @@ struct RayEntry {
     std::map<std::string, MethodEntry> methods;
     std::vector<std::string> order;
 };
-
-std::string read_text(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 // Reads JSON Lines with Python's json module, checks every report's fields,
 // and prints them as plain words for the test to read.
@@ -69,18 +59,8 @@ for line in sys.stdin:
         print("method", m["method"], m["resolved"], m["status"].replace(" ", "_"), m["first_hit"], *m["hits"])
 )";
 
-class RayCli : public ::testing::Test {
+class RayCli : public zeroset::test::CliTest {
 protected:
-    /// Runs `zeroset ARGS` in the temp directory, capturing stdout and stderr
-    /// outside it (so failures can be checked to leave nothing behind).
-    Outcome run(const std::string& args) const {
-        const fs::path out = logs_ / "stdout.txt", err = logs_ / "stderr.txt";
-        const std::string command = "cd '" + dir_.path().string() + "' && '" ZEROSET_BINARY "' " + args + " > '" +
-                                    out.string() + "' 2> '" + err.string() + "'";
-        const int raw = std::system(command.c_str());
-        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};
-    }
-
     /// The JSON Lines text as Python reads it; fails the test if Python rejects it.
     std::vector<RayEntry> parse_json_lines(const std::string& text) const {
         const fs::path script = logs_.write("read.py", json_reader);
@@ -108,9 +88,6 @@ protected:
         }
         return rays;
     }
-
-    zeroset::test::TempDir dir_;
-    zeroset::test::TempDir logs_;
 };
 
 // The Blinn blend of the survey's Figure 3 along the survey's ray has four
