@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "zeroset/trace/root_finder.hpp"
+#include "zeroset/trace/polynomial_method.hpp"
 
 namespace zeroset::test {
 
@@ -22,25 +22,33 @@ SolverAccuracy measure_solver(const Object& object, const std::vector<AlgebraicR
     const double scale = object.bounds.enclosing_box().diagonal();
     RootFinderSettings settings = settings_for_scale(scale);
     settings.polynomial_solver = solver;
-    const auto finder = make_root_finder(Method::Polynomial, tape, settings);
+    PolynomialMethod method(tape, settings);
+    MpfiRayOracle oracle(object.surface, scale);
     RayFunction h(tape);
     SolverAccuracy a;
     for (const AlgebraicRay& r : rays) {
         h.set_ray(r.ray);
         TraceCounters counters;
-        const HitResult hit = finder->first_hit(h, r.span, counters);
+        const HitResult hit = method.first_hit(h, r.span, counters);
         ++a.rays;
-        if (!r.reference) {
-            if (hit.t) ++a.false_hits;
-            continue;
+        std::optional<OracleRoot> reference = r.reference;
+        if (oracle.sign(r.ray, r.span.t0) < 0) reference = OracleRoot{r.span.t0, RootKind::Simple, 0.0};
+        const double resolution = method.rounding_bound(r.ray, r.span);
+        double tolerance = 1e-7 * scale;
+        if (reference && reference->kind == RootKind::Simple && reference->slope > 0.0) {
+            tolerance = std::max(1e-9 * scale, 2.0 * resolution / reference->slope);
         }
-        const bool well_conditioned = r.reference->kind == RootKind::Simple && r.reference->slope >= 1e-6;
-        const double tolerance = (well_conditioned ? 1e-9 : 1e-7) * scale;
-        if (!hit.t || *hit.t > r.reference->t + tolerance) {
+        if (reference && (!hit.t || *hit.t > reference->t + tolerance)) {
             ++a.misses;
             continue;
         }
-        a.errors.push_back(std::abs(*hit.t - r.reference->t) / scale);
+        if (!hit.t) continue;
+        if (reference && *hit.t >= reference->t - tolerance) {
+            a.errors.push_back(std::abs(*hit.t - reference->t) / scale);
+            continue;
+        }
+        ++a.unresolved_hits;
+        a.worst_unresolved = std::max(a.worst_unresolved, oracle.magnitude(r.ray, *hit.t) / resolution);
     }
     return a;
 }

@@ -1,6 +1,7 @@
 // Rigorous first-root isolation along a ray (see mpfi_ray_oracle.hpp).
 #include "support/mpfi_ray_oracle.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -170,6 +171,15 @@ int MpfiRayOracle::sign(const Ray& ray, double t) {
     mpfr_ptr at = lo(work_[number]);
     mpfr_set_d(at, t, MPFR_RNDN);
     return sign_at(at);
+}
+
+double MpfiRayOracle::magnitude(const Ray& ray, double t) {
+    h_.set_ray(ray);
+    mpfi_set_d(work_[point], t);
+    if (!h_.evaluate(work_[point], false).defined) return std::numeric_limits<double>::infinity();
+    mpfr_ptr m = lo(work_[measure]);
+    mpfi_mag(m, h_.value());
+    return mpfr_get_d(m, MPFR_RNDU);
 }
 
 double MpfiRayOracle::width(mpfi_srcptr x) {

@@ -66,6 +66,8 @@ public:
     /// The sign of H at t: ±1 when proven, 0 when H(t) is 0 to within the
     /// precision or undefined.
     int sign(const Ray& ray, double t);
+    /// An upper bound on |H(t)|; +∞ where H is undefined.
+    double magnitude(const Ray& ray, double t);
 
     /// Evaluations of H so far (over all queries).
     [[nodiscard]] std::uint64_t evaluations() const { return h_.evaluations(); }

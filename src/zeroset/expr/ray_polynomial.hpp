@@ -1,7 +1,9 @@
 // F(t) = f∘r(t) as exact coefficients, for a polynomial f (survey §3.3–3.4,
 // eqs. 8–11): the tape is evaluated once in Polynomial arithmetic with
 // x = x_o + t·x_d, y and z alike — DESIGN.md's "one tape, many number types".
-// The closed forms and polynomial solvers then work on the coefficients.
+// This is the plain reference form; the polynomial method runs the compiled
+// RayPolynomialProgram, which also bounds the coefficients' rounding and is
+// checked against this one.
 #pragma once
 
 #include <optional>
@@ -21,15 +23,12 @@ std::optional<Polynomial> ray_polynomial(const Tape& tape, const Ray& ray);
 std::optional<Polynomial> ray_polynomial(Evaluator<Polynomial>& eval, const Ray& ray);
 
 /// The structural total degree of f in x, y, z — an upper bound on the degree
-/// of F along every ray — or −1 when f is not polynomial. A walk over the
-/// clauses with one degree per slot (no ray involved, so the answer is the
-/// same for every ray): constants are degree 0, and any op on constants is a
-/// constant; + − take the max, × adds, square doubles, powi and pow with a
-/// constant integral exponent n ≥ 0 multiply by n, division by a constant
-/// keeps the degree. Anything else on a non-constant is not polynomial. This
-/// accepts more than Tape::is_polynomial (division by constants, pow with an
-/// integral constant exponent, functions of constants) — exactly what
-/// ray_polynomial accepts. The degree saturates at Polynomial::max_degree + 1.
+/// of F along every ray — or −1 when f is not polynomial, by the rules of
+/// RayPolynomialProgram::compile (no ray involved, so the answer is the same
+/// for every ray). This accepts more than Tape::is_polynomial (division by
+/// nonzero constants, pow with an integral constant exponent, functions of
+/// constants) — exactly what ray_polynomial accepts. A degree above
+/// Polynomial::max_degree is reported as max_degree + 1.
 int polynomial_degree(const Tape& tape);
 
 }  // namespace zeroset

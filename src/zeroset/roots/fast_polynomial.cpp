@@ -1,11 +1,13 @@
+// The recursive-derivative solver: extrema level by level, then the roots.
 #include "zeroset/roots/fast_polynomial.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 
-#include "zeroset/roots/bracket.hpp"
+#include "zeroset/roots/monotone_pieces.hpp"
 
 namespace zeroset {
 
@@ -41,118 +43,69 @@ int quadratic_roots(const double* c, double t0, double t1, double* roots) {
     return k;
 }
 
-/// p(t), p′(t), and whether p(t) is within the rounding error of its
-/// evaluation of 0 (horner_error_bound, computed in the same pass).
-struct Sample {
-    double t;
-    double value;
-    double derivative;
-    bool zero;
-};
-
-Sample sample(std::span<const double> p, double t) {
-    double value = 0.0;
-    double derivative = 0.0;
-    double bound = 0.0;
-    const double x = std::abs(t);
-    for (std::size_t i = p.size(); i-- > 0;) {
-        derivative = derivative * t + value;
-        value = value * t + p[i];
-        bound = bound * x + std::abs(p[i]);
-    }
-    const double n2u = static_cast<double>(p.size()) * eps;
-    return {t, value, derivative, std::abs(value) <= n2u / (1.0 - n2u) * bound};
-}
-
-/// The root of p on [a, b], where p is monotone and p(a), p(b) differ in
-/// sign: Newton from the secant point, kept inside the shrinking bracket,
-/// bisecting whenever a step lands outside it or is not at most half the
-/// step before (the safeguard of Numerical Recipes' rtsafe). It stops, after
-/// one last Newton step, when p is within its rounding error bound of 0 or
-/// the step is within a few ulps of the point. Unlike refine_root it
-/// reuses the known end values, which saves two evaluations a root.
-double monotone_root(std::span<const double> p, Sample lo, Sample hi, int& evaluations) {
-    double a = lo.t;
-    double b = hi.t;
-    const bool a_negative = lo.value < 0.0;
-    double x = a + (b - a) * (lo.value / (lo.value - hi.value));
-    double previous_step = b - a;
-    for (int i = 0; i < max_bisections; ++i) {
-        if (!(a < x && x < b)) x = 0.5 * a + 0.5 * b;
-        if (!(a < x && x < b)) break;  // a and b are adjacent doubles
-        const Sample v = sample(p, x);
-        ++evaluations;
-        if (v.value == 0.0) return x;
-        ((v.value < 0.0) == a_negative ? a : b) = x;
-        const double step = v.value / v.derivative;
-        // In the noise (the bound is pessimistic) one last Newton step helps.
-        if (v.zero || std::abs(step) <= 8.0 * eps * std::abs(x)) return a <= x - step && x - step <= b ? x - step : x;
-        const bool steady = std::abs(step) <= 0.5 * std::abs(previous_step);
-        previous_step = step;
-        x = steady ? x - step : 0.5 * a + 0.5 * b;
-    }
-    return std::abs(horner(p, a).value) <= std::abs(horner(p, b).value) ? a : b;
-}
-
-/// The roots of p in [t0, t1], given the roots of p′ there (increasing):
-/// at most `limit` of them, increasing.
-int roots_between(std::span<const double> p, double t0, double t1, const double* splits, int split_count,
-                  double* roots, int limit, int& evaluations) {
-    int k = 0;
-    Sample previous = sample(p, t0);
-    ++evaluations;
-    if (previous.zero) roots[k++] = t0;
-    for (int i = 0; i <= split_count && k < limit; ++i) {
-        const double t = i < split_count ? splits[i] : t1;
-        if (t <= previous.t) continue;
-        const Sample current = sample(p, t);
-        ++evaluations;
-        if (!previous.zero && !current.zero && (previous.value < 0.0) != (current.value < 0.0)) {
-            roots[k++] = monotone_root(p, previous, current, evaluations);
-        }
-        // A run of points indistinguishable from 0 is one root.
-        if (current.zero && !previous.zero && k < limit) roots[k++] = t;
-        previous = current;
-    }
-    return k;
-}
-
 }  // namespace
+
+PolynomialRoots fast_polynomial_extrema(std::span<const double> c, double t0, double t1, std::span<double> out) {
+    const int n = checked_degree(c, t0, t1);
+    PolynomialRoots result;
+    if (n < 2) return result;
+    if (out.size() < static_cast<std::size_t>(n - 1)) throw std::invalid_argument("fast_polynomial_extrema needs room for n - 1 roots");
+    ++result.evaluations;  // the closed-form root(s) at the bottom
+    if (n == 2) {
+        const double t = -c[1] / (2.0 * c[2]);
+        if (t >= t0 && t <= t1) {
+            out[0] = t;
+            result.count = 1;
+        }
+        return result;
+    }
+    // derivatives[j] is the j-th derivative of p, of degree n − j.
+    std::array<PolynomialScratch, max_polynomial_degree - 1> derivatives;
+    std::copy_n(c.begin(), n + 1, derivatives[0].begin());
+    for (int j = 1; j <= n - 2; ++j) {
+        const auto& from = derivatives[static_cast<std::size_t>(j - 1)];
+        auto& to = derivatives[static_cast<std::size_t>(j)];
+        for (int i = 0; i <= n - j; ++i) {
+            to[static_cast<std::size_t>(i)] = static_cast<double>(i + 1) * from[static_cast<std::size_t>(i + 1)];
+        }
+    }
+    PolynomialScratch roots{};
+    int count = quadratic_roots(derivatives[static_cast<std::size_t>(n - 2)].data(), t0, t1, roots.data());
+    PolynomialScratch next{};
+    for (int j = n - 3; j >= 1; --j) {
+        const std::span<const double> p(derivatives[static_cast<std::size_t>(j)].data(), static_cast<std::size_t>(n - j + 1));
+        count = roots_between(p, t0, t1, std::span<const double>(roots.data(), static_cast<std::size_t>(count)),
+                              next.data(), n - j, result.evaluations);
+        std::swap(roots, next);
+    }
+    result.count = count;
+    std::copy_n(roots.begin(), count, out.begin());
+    return result;
+}
 
 PolynomialRoots fast_polynomial_roots(std::span<const double> c, double t0, double t1, std::span<double> out) {
     const int n = checked_degree(c, t0, t1);
     PolynomialRoots result;
     if (n < 1 || out.empty()) return result;
     const int wanted = static_cast<int>(std::min<std::size_t>(out.size(), static_cast<std::size_t>(n)));
-    PolynomialScratch roots{};
-    int count = 0;
-    ++result.evaluations;  // the closed-form root(s) at the bottom
     if (n == 1) {
+        ++result.evaluations;
         const double t = -c[0] / c[1];
-        if (t >= t0 && t <= t1) roots[count++] = t;
-    } else {
-        // derivatives[j] is the j-th derivative of p, of degree n − j.
-        std::array<PolynomialScratch, max_polynomial_degree - 1> derivatives;
-        std::copy_n(c.begin(), n + 1, derivatives[0].begin());
-        for (int j = 1; j <= n - 2; ++j) {
-            const auto& from = derivatives[static_cast<std::size_t>(j - 1)];
-            auto& to = derivatives[static_cast<std::size_t>(j)];
-            for (int i = 0; i <= n - j; ++i) {
-                to[static_cast<std::size_t>(i)] = static_cast<double>(i + 1) * from[static_cast<std::size_t>(i + 1)];
-            }
+        if (t >= t0 && t <= t1) {
+            out[0] = t;
+            result.count = 1;
         }
-        count = quadratic_roots(derivatives[static_cast<std::size_t>(n - 2)].data(), t0, t1, roots.data());
-        PolynomialScratch next{};
-        for (int j = n - 3; j >= 0; --j) {
-            const std::span<const double> p(derivatives[static_cast<std::size_t>(j)].data(),
-                                            static_cast<std::size_t>(n - j + 1));
-            count = roots_between(p, t0, t1, roots.data(), count, next.data(), j == 0 ? wanted : n - j,
-                                  result.evaluations);
-            std::swap(roots, next);
-        }
+        return result;
     }
-    result.count = std::min(count, wanted);
-    std::copy_n(roots.begin(), result.count, out.begin());
+    PolynomialScratch extrema{};
+    const PolynomialRoots e = fast_polynomial_extrema(c, t0, t1, extrema);
+    result.evaluations = e.evaluations;
+    PolynomialScratch roots{};
+    const int count = roots_between(c.first(static_cast<std::size_t>(n) + 1), t0, t1,
+                                    std::span<const double>(extrema.data(), static_cast<std::size_t>(e.count)),
+                                    roots.data(), wanted, result.evaluations);
+    result.count = count;
+    std::copy_n(roots.begin(), count, out.begin());
     return result;
 }
 

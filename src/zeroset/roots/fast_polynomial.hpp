@@ -24,6 +24,10 @@ namespace zeroset {
 /// ones). The zero polynomial and constants have none.
 PolynomialRoots fast_polynomial_roots(std::span<const double> c, double t0, double t1, std::span<double> out);
 
+/// The roots of c′ in [t0, t1] — the extrema of c there — increasing, into
+/// out, which must hold degree − 1 of them (a constant or a line has none).
+PolynomialRoots fast_polynomial_extrema(std::span<const double> c, double t0, double t1, std::span<double> out);
+
 /// The smallest real root in [t0, t1].
 inline FirstPolynomialRoot fast_polynomial_first_root(std::span<const double> c, double t0, double t1) {
     return first_root_with(fast_polynomial_roots, c, t0, t1);

@@ -1,33 +1,55 @@
-// F(t) in Polynomial arithmetic, then the chosen solver.
+// F(t) about the span's midpoint with its rounding bound, then the chosen
+// solver, guarded.
 #include "zeroset/trace/polynomial_method.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "zeroset/expr/ray_polynomial.hpp"
 #include "zeroset/roots/closed_form.hpp"
 #include "zeroset/roots/descartes.hpp"
 #include "zeroset/roots/fast_polynomial.hpp"
 #include "zeroset/roots/laguerre.hpp"
+#include "zeroset/roots/polynomial_enclosure.hpp"
 #include "zeroset/roots/sturm.hpp"
 
 namespace zeroset {
 
-PolynomialMethod::PolynomialMethod(const Tape& tape, const RootFinderSettings& settings)
-    : settings_(settings), coefficients_(tape) {
-    const int degree = polynomial_degree(tape);
-    if (degree < 0 || degree > Polynomial::max_degree)
+namespace {
+
+RayPolynomialProgram compiled(const Tape& tape) {
+    RayPolynomialProgram::Compiled c = RayPolynomialProgram::compile(tape);
+    if (!c.program) {
         throw std::invalid_argument("the polynomial method needs a surface that is a polynomial in x, y, z of degree at most " +
-                                    std::to_string(Polynomial::max_degree));
+                                    std::to_string(RayPolynomialProgram::max_degree));
+    }
+    return std::move(*c.program);
 }
 
-int PolynomialMethod::solve(const Polynomial& f, double t0, double t1, std::span<double> out,
+/// The span in the centred parameter s = t − t_c.
+struct CentredSpan {
+    double t_c;
+    double s0;
+    double s1;
+};
+
+CentredSpan centre(Span span) {
+    const double t_c = 0.5 * span.t0 + 0.5 * span.t1;
+    return {t_c, std::min(span.t0 - t_c, 0.0), std::max(span.t1 - t_c, 0.0)};
+}
+
+}  // namespace
+
+PolynomialMethod::PolynomialMethod(const Tape& tape, const RootFinderSettings& settings)
+    : settings_(settings), program_(compiled(tape)) {}
+
+int PolynomialMethod::solve(std::span<const double> c, double t0, double t1, std::span<double> out,
                             TraceCounters& counters) const {
-    const std::span<const double> c = f.coefficients();
     PolynomialSolver solver = settings_.polynomial_solver;
-    if (solver == PolynomialSolver::Closed && f.degree() > max_closed_form_degree) solver = PolynomialSolver::Sturm;
+    if (solver == PolynomialSolver::Closed && checked_degree(c, t0, t1) > max_closed_form_degree) solver = PolynomialSolver::Sturm;
     PolynomialRoots r;
     switch (solver) {
         case PolynomialSolver::Closed: {
@@ -48,24 +70,77 @@ int PolynomialMethod::solve(const Polynomial& f, double t0, double t1, std::span
 }
 
 HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {
-    ++counters.point_evaluations;  // one walk of the tape in Polynomial arithmetic
-    const auto f = ray_polynomial(coefficients_, h.ray());
-    if (!f) return {std::nullopt, HitStatus::Failed};
-    const double start = (*f)(span.t0);
+    ++counters.point_evaluations;  // one run of the compiled program
+    const CentredSpan c = centre(span);
+    program_.evaluate(h.ray(), c.t_c);
+    const std::span<const double> value = program_.value();
+    const double start = horner(value, c.s0).value;
     if (std::isnan(start)) return {std::nullopt, HitStatus::Failed};
     if (start <= 0.0) return {span.t0, HitStatus::Ok};  // the ray starts in the solid
+    const auto hit_at = [&](double s) { return HitResult{std::clamp(c.t_c + s, span.t0, span.t1), HitStatus::Ok}; };
+
     std::array<double, 1> first{};
-    if (solve(*f, span.t0, span.t1, first, counters) == 0) return {std::nullopt, HitStatus::NoHit};
-    return {first[0], HitStatus::Ok};
+    const auto solve_first = [&](double s1) -> std::optional<double> {
+        if (solve(value, c.s0, s1, first, counters) == 0) return std::nullopt;
+        return first[0];
+    };
+    if (!program_.error_known()) {  // no bound to guard with: trust F̂
+        const auto s = solve_first(c.s1);
+        return s ? hit_at(*s) : HitResult{std::nullopt, HitStatus::NoHit};
+    }
+
+    const PolynomialEnclosure enclosure = current_enclosure();
+
+    // F̂'s extrema up to its first root: the fast solver finds them on its way
+    // to the roots; any other solver finds the first root, then the extrema
+    // before it as the roots of F̂′. A root where F̂ is plainly not 0 (a
+    // cluster's midpoint, an inaccurate closed form) is not trusted: the
+    // extrema then cover the whole span, and the scan finds the root.
+    std::array<double, RayPolynomialProgram::max_degree> extrema{};
+    int extremum_count = 0;
+    std::optional<double> root;
+    if (settings_.polynomial_solver == PolynomialSolver::Fast) {
+        const PolynomialRoots e = fast_polynomial_extrema(value, c.s0, c.s1, extrema);
+        counters.point_evaluations += static_cast<std::uint64_t>(e.evaluations);
+        extremum_count = e.count;
+    } else {
+        root = solve_first(c.s1);
+        if (root && std::abs(horner(value, *root).value) > enclosure_bound(enclosure, *root)) root.reset();
+        std::array<double, RayPolynomialProgram::max_degree> derivative{};
+        for (std::size_t i = 1; i < value.size(); ++i) derivative[i - 1] = static_cast<double>(i) * value[i];
+        extremum_count = solve(std::span<const double>(derivative.data(), value.size() - 1), c.s0,
+                               root.value_or(c.s1), extrema, counters);
+    }
+    const PossibleRoot hit =
+        first_possible_root(enclosure, c.s0, root.value_or(c.s1),
+                            std::span<const double>(extrema.data(), static_cast<std::size_t>(extremum_count)),
+                            root.has_value());
+    counters.point_evaluations += static_cast<std::uint64_t>(hit.evaluations);
+    if (!hit.found) return {std::nullopt, HitStatus::NoHit};
+    return hit_at(hit.t);
+}
+
+double PolynomialMethod::rounding_bound(const Ray& ray, Span span) {
+    if (!program_.error_known()) return std::numeric_limits<double>::infinity();
+    const CentredSpan c = centre(span);
+    program_.evaluate(ray, c.t_c);
+    const PolynomialEnclosure f = current_enclosure();
+    return std::max(enclosure_bound(f, c.s0), enclosure_bound(f, c.s1));
+}
+
+PolynomialEnclosure PolynomialMethod::current_enclosure() {
+    const std::span<const double> value = program_.value();
+    for (std::size_t i = 0; i < value.size(); ++i) radius_[i] = program_.radius(static_cast<int>(i));
+    return {value, std::span<const double>(radius_.data(), value.size())};
 }
 
 HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
     ++counters.point_evaluations;
-    const auto f = ray_polynomial(coefficients_, h.ray());
-    if (!f) return HitStatus::Failed;
-    std::array<double, Polynomial::max_degree> roots{};
-    const int count = solve(*f, span.t0, span.t1, roots, counters);
-    hits.insert(hits.end(), roots.begin(), roots.begin() + count);
+    const CentredSpan c = centre(span);
+    program_.evaluate(h.ray(), c.t_c);
+    std::array<double, RayPolynomialProgram::max_degree> roots{};
+    const int count = solve(program_.value(), c.s0, c.s1, roots, counters);
+    for (int i = 0; i < count; ++i) hits.push_back(std::clamp(c.t_c + roots[static_cast<std::size_t>(i)], span.t0, span.t1));
     return count > 0 ? HitStatus::Ok : HitStatus::NoHit;
 }
 

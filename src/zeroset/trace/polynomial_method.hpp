@@ -6,10 +6,20 @@
 // Laguerre's method, or the recursive-derivative solver after Yuksel (HPG
 // 2022). Sturm, Descartes and the fast solver isolate every real root;
 // Laguerre and the closed forms can lose nearly-double roots.
+//
+// F is formed about the span's midpoint by a compiled program
+// (expr/ray_polynomial_program.hpp), with a proven bound R on its rounding,
+// so F is known as F̂ ± R. The first
+// hit is guarded (roots/polynomial_enclosure.hpp): an extremum of F̂ before
+// its first root that comes within R of 0 is a graze the arithmetic cannot
+// resolve, and counts as a hit rather than a miss. all_hits lists F̂'s roots.
 #pragma once
 
-#include "zeroset/expr/evaluator.hpp"
-#include "zeroset/math/polynomial.hpp"
+#include <array>
+#include <span>
+
+#include "zeroset/expr/ray_polynomial_program.hpp"
+#include "zeroset/roots/polynomial_enclosure.hpp"
 #include "zeroset/trace/root_finder.hpp"
 
 namespace zeroset {
@@ -23,12 +33,22 @@ public:
     HitResult first_hit(RayFunction& h, Span span, TraceCounters& counters) override;
     HitStatus all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) override;
 
+    /// The method's resolution on this ray: the largest proven bound on
+    /// |F(t) − F̂(t)| over the span (+∞ when the bound is lost). Where the
+    /// exact |F| is below it the arithmetic cannot tell F from 0, and the
+    /// first hit may be reported without a root.
+    double rounding_bound(const Ray& ray, Span span);
+
 private:
     /// The real roots of F in [t0, t1], increasing, into `out`; their number.
-    int solve(const Polynomial& f, double t0, double t1, std::span<double> out, TraceCounters& counters) const;
+    int solve(std::span<const double> f, double t0, double t1, std::span<double> out, TraceCounters& counters) const;
 
     RootFinderSettings settings_;
-    Evaluator<Polynomial> coefficients_;
+    /// F̂ from the program's last run, with its coefficients' radii.
+    PolynomialEnclosure current_enclosure();
+
+    RayPolynomialProgram program_;
+    std::array<double, RayPolynomialProgram::max_degree + 1> radius_{};
 };
 
 }  // namespace zeroset

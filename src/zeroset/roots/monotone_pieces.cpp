@@ -1,0 +1,81 @@
+// Sampling, bracketed Newton and the piece-by-piece scan.
+#include "zeroset/roots/monotone_pieces.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "zeroset/roots/bracket.hpp"
+#include "zeroset/roots/polynomial_roots.hpp"
+
+namespace zeroset {
+
+namespace {
+constexpr double eps = std::numeric_limits<double>::epsilon();
+}  // namespace
+
+PolynomialSample sample_polynomial(std::span<const double> p, double t) {
+    double value = 0.0;
+    double derivative = 0.0;
+    double bound = 0.0;
+    const double x = std::abs(t);
+    for (std::size_t i = p.size(); i-- > 0;) {
+        derivative = derivative * t + value;
+        value = value * t + p[i];
+        bound = bound * x + std::abs(p[i]);
+    }
+    const double n2u = static_cast<double>(p.size()) * eps;
+    return {t, value, derivative, std::abs(value) <= n2u / (1.0 - n2u) * bound};
+}
+
+double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialSample hi, int& evaluations) {
+    double a = lo.t;
+    double b = hi.t;
+    const bool a_negative = lo.value < 0.0;
+    double x = a + (b - a) * (lo.value / (lo.value - hi.value));
+    double previous_step = b - a;
+    for (int i = 0; i < max_bisections; ++i) {
+        if (!(a < x && x < b)) x = 0.5 * a + 0.5 * b;
+        if (!(a < x && x < b)) break;  // a and b are adjacent doubles
+        const PolynomialSample v = sample_polynomial(p, x);
+        ++evaluations;
+        if (v.value == 0.0) return x;
+        ((v.value < 0.0) == a_negative ? a : b) = x;
+        const double step = v.value / v.derivative;
+        // In the noise (the bound is pessimistic) one last Newton step helps —
+        // if it lowers |p|: near a double root p′ is nearly 0 too, and the
+        // step is noise divided by almost nothing.
+        if (v.zero || std::abs(step) <= 8.0 * eps * std::abs(x)) {
+            const double last = x - step;
+            if (!(a <= last && last <= b)) return x;
+            ++evaluations;
+            return std::abs(horner(p, last).value) <= std::abs(v.value) ? last : x;
+        }
+        const bool steady = std::abs(step) <= 0.5 * std::abs(previous_step);
+        previous_step = step;
+        x = steady ? x - step : 0.5 * a + 0.5 * b;
+    }
+    return std::abs(horner(p, a).value) <= std::abs(horner(p, b).value) ? a : b;
+}
+
+int roots_between(std::span<const double> p, double t0, double t1, std::span<const double> extrema, double* roots,
+                  int limit, int& evaluations) {
+    int k = 0;
+    PolynomialSample previous = sample_polynomial(p, t0);
+    ++evaluations;
+    if (previous.zero) roots[k++] = t0;
+    for (std::size_t i = 0; i <= extrema.size() && k < limit; ++i) {
+        const double t = i < extrema.size() ? extrema[i] : t1;
+        if (t <= previous.t) continue;
+        const PolynomialSample current = sample_polynomial(p, t);
+        ++evaluations;
+        if (!previous.zero && !current.zero && (previous.value < 0.0) != (current.value < 0.0)) {
+            roots[k++] = monotone_root(p, previous, current, evaluations);
+        }
+        if (current.zero && !previous.zero && k < limit) roots[k++] = t;
+        previous = current;
+    }
+    return k;
+}
+
+}  // namespace zeroset

@@ -1,0 +1,96 @@
+// The piece-by-piece scan for the first possible root.
+#include "zeroset/roots/polynomial_enclosure.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "zeroset/roots/monotone_pieces.hpp"
+#include "zeroset/roots/polynomial_roots.hpp"
+
+namespace zeroset {
+
+namespace {
+
+/// F̂ at t and the bound on |F(t) − F̂(t)|.
+struct EnclosureSample {
+    PolynomialSample value;
+    double bound;
+
+    [[nodiscard]] bool uncertain() const { return std::abs(value.value) <= bound; }
+};
+
+EnclosureSample sample_enclosure(PolynomialEnclosure f, double t) {
+    return {sample_polynomial(f.value, t), enclosure_bound(f, t)};
+}
+
+/// Where p, monotone on [a.t, b.t] and of one sign there, first comes within
+/// `bound` of 0 — b being within it and a not: the root of p ∓ bound. No
+/// root of the exact polynomial lies before it on the piece.
+double first_within(std::span<const double> p, PolynomialSample a, PolynomialSample b, double bound, int& evaluations) {
+    std::array<double, max_polynomial_degree + 1> shifted{};
+    std::copy(p.begin(), p.end(), shifted.begin());
+    const double shift = a.value > 0.0 ? bound : -bound;
+    shifted[0] -= shift;
+    a.value -= shift;
+    b.value -= shift;
+    if (b.value == 0.0) return b.t;
+    return monotone_root(std::span<const double>(shifted.data(), p.size()), a, b, evaluations);
+}
+
+}  // namespace
+
+double enclosure_bound(PolynomialEnclosure f, double t) {
+    const double x = std::abs(t);
+    double radius = 0.0;
+    for (std::size_t i = f.radius.size(); i-- > 0;) radius = radius * x + f.radius[i];
+    double magnitude = 0.0;
+    for (std::size_t i = f.value.size(); i-- > 0;) magnitude = magnitude * x + std::abs(f.value[i]);
+    constexpr double u = std::numeric_limits<double>::epsilon() / 2.0;
+    const double n = static_cast<double>(std::max(f.value.size(), f.radius.size()));
+    const double horner = 2.0 * n * u / (1.0 - 2.0 * n * u);
+    return (radius + horner * magnitude) * (1.0 + horner);
+}
+
+PossibleRoot first_possible_root(PolynomialEnclosure f, double t0, double t1, std::span<const double> extrema,
+                                 bool t1_is_root) {
+    PossibleRoot r;
+    EnclosureSample a = sample_enclosure(f, t0);
+    ++r.evaluations;
+    if (a.uncertain()) {
+        r.found = true;
+        r.t = t0;
+        r.sign_change = a.value.value == 0.0;
+        return r;
+    }
+    for (std::size_t i = 0; i <= extrema.size(); ++i) {
+        const double t = i < extrema.size() ? extrema[i] : t1;
+        if (t <= a.value.t || t > t1) continue;
+        if (t1_is_root && (i == extrema.size() || t == t1)) break;  // the last piece ends at the known root
+        const EnclosureSample b = sample_enclosure(f, t);
+        ++r.evaluations;
+        r.found = true;
+        if (b.value.value == 0.0 || (a.value.value < 0.0) != (b.value.value < 0.0)) {
+            r.sign_change = true;
+            r.t = b.value.value == 0.0 ? t : monotone_root(f.value, a.value, b.value, r.evaluations);
+            return r;
+        }
+        const double bound = std::max(a.bound, b.bound);
+        if (std::min(std::abs(a.value.value), std::abs(b.value.value)) <= bound) {
+            r.t = std::abs(a.value.value) <= bound ? a.value.t : first_within(f.value, a.value, b.value, bound, r.evaluations);
+            return r;
+        }
+        r.found = false;
+        a = b;
+    }
+    if (t1_is_root) {
+        r.found = true;
+        r.t = t1;
+        r.sign_change = true;
+    }
+    return r;
+}
+
+}  // namespace zeroset

@@ -1,0 +1,120 @@
+// The guarded first hit of a polynomial known only to within a bound
+// (roots/polynomial_enclosure.hpp), the extrema of the fast solver, and the
+// bracketed Newton that both rely on (roots/monotone_pieces.hpp).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "zeroset/roots/fast_polynomial.hpp"
+#include "zeroset/roots/monotone_pieces.hpp"
+#include "zeroset/roots/polynomial_enclosure.hpp"
+#include "zeroset/roots/polynomial_roots.hpp"
+
+namespace zeroset {
+namespace {
+
+/// (t − 1)² + depth: a dip towards 0 at t = 1 whose bottom is `depth` above it.
+std::vector<double> dip(double depth) { return {1.0 + depth, -2.0, 1.0}; }
+
+PossibleRoot first(const std::vector<double>& value, double radius0, double t0, double t1) {
+    const std::vector<double> radius{radius0, 0.0, 0.0};
+    std::array<double, 2> extrema{};
+    const PolynomialRoots e = fast_polynomial_extrema(value, t0, t1, extrema);
+    return first_possible_root({value, radius}, t0, t1,
+                               std::span<const double>(extrema.data(), static_cast<std::size_t>(e.count)), false);
+}
+
+TEST(PolynomialEnclosure, ADipShallowerThanTheBoundIsAHit) {
+    // F̂ stays 1e-12 above 0, but F may be anywhere within 1e-11 of F̂.
+    const PossibleRoot r = first(dip(1e-12), 1e-11, 0.0, 3.0);
+    ASSERT_TRUE(r.found);
+    EXPECT_FALSE(r.sign_change);
+    // The first t where F̂ comes within the bound: no root of F lies before it.
+    EXPECT_LE(r.t, 1.0);
+    EXPECT_GT(r.t, 1.0 - 1e-5);
+    EXPECT_LE(std::abs(horner(dip(1e-12), r.t).value), 1.1e-11);
+}
+
+TEST(PolynomialEnclosure, ADipDeeperThanTheBoundIsNoHit) {
+    EXPECT_FALSE(first(dip(1e-9), 1e-11, 0.0, 3.0).found);
+    EXPECT_FALSE(first(dip(1e-12), 0.0, 0.0, 3.0).found);
+}
+
+TEST(PolynomialEnclosure, ACrossingIsRefinedToTheRootOfTheRoundedPolynomial) {
+    const PossibleRoot r = first(dip(-0.25), 1e-11, 0.0, 3.0);  // roots 0.5 and 1.5
+    ASSERT_TRUE(r.found);
+    EXPECT_TRUE(r.sign_change);
+    EXPECT_NEAR(r.t, 0.5, 1e-15);
+}
+
+TEST(PolynomialEnclosure, AStartWithinTheBoundIsAHitThere) {
+    const PossibleRoot r = first({1e-12, 1.0, 0.0}, 1e-11, 0.0, 1.0);
+    ASSERT_TRUE(r.found);
+    EXPECT_EQ(r.t, 0.0);
+}
+
+TEST(PolynomialEnclosure, AKnownRootIsKeptUnlessADipComesFirst) {
+    // p = ((t − 1)² + 1e-12)·(2 − t): a dip of depth 1e-12 at 1, then a
+    // crossing at 2. The scan stops short of a root already known at 1.9.
+    const std::vector<double> p{2.0 + 2e-12, -5.0 - 1e-12, 4.0, -1.0};
+    std::array<double, 2> extrema{};
+    const PolynomialRoots e = fast_polynomial_extrema(p, 0.0, 1.9, extrema);
+    const std::span<const double> ex(extrema.data(), static_cast<std::size_t>(e.count));
+    const std::vector<double> tight{0.0, 0.0, 0.0, 0.0};
+    const std::vector<double> loose{1e-11, 0.0, 0.0, 0.0};
+    // With no error the dip holds no root: the known root (pretend 1.9) stands.
+    const PossibleRoot kept = first_possible_root({p, tight}, 0.0, 1.9, ex, true);
+    ASSERT_TRUE(kept.found);
+    EXPECT_EQ(kept.t, 1.9);
+    // With an error larger than the dip's depth the dip comes first.
+    const PossibleRoot dip_first = first_possible_root({p, loose}, 0.0, 1.9, ex, true);
+    ASSERT_TRUE(dip_first.found);
+    EXPECT_NEAR(dip_first.t, 1.0, 1e-5);
+}
+
+TEST(PolynomialEnclosure, TheBoundGrowsWithTheDistanceFromTheCentre) {
+    const std::vector<double> value{1.0, 0.0, 1.0};
+    const std::vector<double> radius{1e-16, 0.0, 1e-16};
+    const double near = enclosure_bound({value, radius}, 0.0);
+    const double far = enclosure_bound({value, radius}, -10.0);
+    EXPECT_GE(near, 1e-16);
+    EXPECT_GT(far, 100.0 * 1e-16);
+    EXPECT_EQ(far, enclosure_bound({value, radius}, 10.0));
+}
+
+TEST(FastPolynomialExtrema, AreTheRootsOfTheDerivative) {
+    // p = (t − 0.1)(t − 0.5)(t − 0.9)(t − 2): p′ has three real roots.
+    const std::vector<double> p{0.09, -1.225, 3.59, -3.5, 1.0};
+    std::array<double, 3> extrema{};
+    const PolynomialRoots e = fast_polynomial_extrema(p, -1.0, 3.0, extrema);
+    ASSERT_EQ(e.count, 3);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_LE(std::abs(horner(p, extrema[static_cast<std::size_t>(i)]).derivative), 1e-12);
+        if (i > 0) {
+            EXPECT_LT(extrema[static_cast<std::size_t>(i - 1)], extrema[static_cast<std::size_t>(i)]);
+        }
+    }
+    std::array<double, 1> one{};
+    EXPECT_EQ(fast_polynomial_extrema(std::vector<double>{1.0, -2.0, 1.0}, 0.0, 3.0, one).count, 1);
+    EXPECT_NEAR(one[0], 1.0, 1e-15);
+}
+
+TEST(MonotoneRoot, NearADoubleRootDoesNotStepAway) {
+    // A Barth sextic ray that grazes the surface: on this piece p falls from
+    // 17.5 to −1e-14 at a near-double root, where p′ is nearly 0 too. A last
+    // Newton step there used to jump 0.19 back up the slope (p ≈ 2.9).
+    const std::vector<double> p{23.44657406655692, 58.44921681218639, 0.7434995108854086, -56.703111903676614,
+                                0.4004775779656309, 12.879223771661298, 1.989936009381907};
+    const PolynomialSample lo = sample_polynomial(p, -1.0815348894041241);
+    const PolynomialSample hi = sample_polynomial(p, -0.62109439187144189);
+    ASSERT_GT(lo.value, 0.0);
+    int evaluations = 0;
+    const double t = monotone_root(p, lo, hi, evaluations);
+    EXPECT_LE(std::abs(horner(p, t).value), 1e-9);
+    EXPECT_NEAR(t, -0.621094, 1e-5);
+}
+
+}  // namespace
+}  // namespace zeroset
