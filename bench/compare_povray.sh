@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Renders the Barth sextic at 512×512 with POV-Ray 3.7 (`polynomial … sturm`)
-# and with zeroset (each method), same size, same threads, no anti-aliasing,
-# in the same run, and prints the times and the ratios. Needs POV-Ray
+# and with zeroset (each method, and the polynomial method with each solver),
+# same size, same threads, no anti-aliasing, in the same run, and prints the
+# median times and the ratios. Needs POV-Ray
 # (`apt-get install povray`) and a built zeroset (./build/zeroset).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,6 +10,7 @@ size=${SIZE:-512}
 threads=${THREADS:-$(nproc)}
 runs=${RUNS:-3}
 methods=${METHODS:-"auto interval lg sphere"}
+solvers=${SOLVERS:-"closed sturm descartes laguerre fast"}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -30,9 +32,15 @@ median_time() {
 }
 
 pov=$(median_time povray "+I$work/barth_sextic.pov" "+O$work/pov.png" "+W$size" "+H$size" -A -D "+WT$threads" -GA)
-printf '%-22s %8.3f s\n' "povray (sturm)" "$pov"
-for m in $methods; do
+printf '%-34s %8.3f s\n' "povray (sturm)" "$pov"
+# One zeroset render: a label, then the render's extra options.
+zeroset_row() {
+  local label=$1
+  shift
+  local t
   t=$(median_time ./build/zeroset render scenes/algebraic/barth_sextic.zs -o "$work/zs.png" \
-        --width "$size" --height "$size" --threads "$threads" --method "$m" -q)
-  printf '%-22s %8.3f s   povray/zeroset = %.2f\n' "zeroset --method $m" "$t" "$(echo "$pov / $t" | bc -l)"
-done
+        --width "$size" --height "$size" --threads "$threads" -q "$@")
+  printf '%-34s %8.3f s   povray/zeroset = %.2f\n' "$label" "$t" "$(echo "$pov / $t" | bc -l)"
+}
+for m in $methods; do zeroset_row "zeroset --method $m" --method "$m"; done
+for s in $solvers; do zeroset_row "zeroset --method polynomial --solver $s" --method polynomial --solver "$s"; done
