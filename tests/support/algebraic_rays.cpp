@@ -1,9 +1,11 @@
 // Ray construction for the algebraic accuracy study.
 #include "support/algebraic_rays.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
+#include "support/surface_nodes.hpp"
 #include "zeroset/expr/evaluator.hpp"
 
 namespace zeroset::test {
@@ -44,6 +46,29 @@ std::optional<Vec3d> surface_point(Evaluator<double>& f, const Ray& ray, Span sp
     return std::nullopt;
 }
 
+/// A ray in the direction u through `node` rounded to the multiples of a
+/// power of two q (about 1e-16 × scale), reached at the parameter s ≥ scale,
+/// a power of two: origin, point and s·dir are multiples of q below 2^53·q,
+/// so all are doubles and origin + s·dir is the rounded node exactly. Only a
+/// node that is itself on the grid (the cone's apex) is hit exactly; the ray
+/// passes any other about an ulp off and, in some directions, misses the
+/// surface there — as it may where the surface's coefficients are rounded
+/// (φ, √2) and a node has become a neck or a gap about 1e-8 × scale wide.
+/// The oracle's reference says which.
+Ray node_ray(const Vec3d& node, const Vec3d& u, double scale) {
+    const double s = std::ldexp(1.0, std::ilogb(scale) + 1);
+    const double reach = std::max({std::abs(node.x), std::abs(node.y), std::abs(node.z)}) + s;
+    const double q = std::ldexp(1.0, std::ilogb(reach) + 2 - 53);
+    const auto on_grid = [q](double v) { return std::nearbyint(v / q) * q; };
+    Ray ray;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double p = on_grid(node[axis]);
+        ray.origin[axis] = on_grid(p - s * u[axis]);
+        ray.dir[axis] = (p - ray.origin[axis]) / s;
+    }
+    return ray;
+}
+
 }  // namespace
 
 std::vector<AlgebraicRay> algebraic_rays(const Object& object, int count, unsigned seed) {
@@ -56,6 +81,10 @@ std::vector<AlgebraicRay> algebraic_rays(const Object& object, int count, unsign
     Evaluator<double> f(tape);
     Evaluator<Dual<double>> gradient(tape);
     MpfiRayOracle oracle(object.surface, scale);
+    const std::vector<Vec3d> nodes = surface_nodes(object.surface, object.bounds);
+    std::vector<AlgebraicRayKind> cycle = {AlgebraicRayKind::Random, AlgebraicRayKind::Grazing};
+    if (!nodes.empty()) cycle.push_back(AlgebraicRayKind::Node);
+    std::uniform_int_distribution<std::size_t> pick_node(0, nodes.empty() ? 0 : nodes.size() - 1);
 
     const auto random_inside = [&] {
         return Vec3d{box.lo.x + unit(rng) * (box.hi.x - box.lo.x), box.lo.y + unit(rng) * (box.hi.y - box.lo.y),
@@ -63,16 +92,24 @@ std::vector<AlgebraicRay> algebraic_rays(const Object& object, int count, unsign
     };
     std::vector<AlgebraicRay> rays;
     while (static_cast<int>(rays.size()) < count) {
+        const AlgebraicRayKind kind = cycle[rays.size() % cycle.size()];
+        if (kind == AlgebraicRayKind::Node) {
+            const Vec3d& node = nodes[pick_node(rng)];  // before the direction: one draw order
+            const Ray ray = node_ray(node, random_unit(rng), scale);
+            const auto span = object.bounds.clip(ray, 0.0, 4.0 * scale);
+            if (!span) continue;
+            rays.push_back({ray, *span, oracle.first_root(ray, *span), kind});
+            continue;
+        }
         // A random ray from outside through a random point of the bounds.
         const Vec3d origin = centre + random_unit(rng) * scale;
         Ray ray{origin, normalize(random_inside() - origin)};
-        bool grazing = false;
         auto span = object.bounds.clip(ray, 0.0, 4.0 * scale);
         if (!span) continue;
-        // Every other ray is rebuilt to graze the surface where the random ray
-        // met it: tangent to it there, or passing it at an offset of 1e-12 to
-        // 1e-3 × scale on either side.
-        if (rays.size() % 2 == 1) {
+        // A grazing ray is the random one rebuilt to graze the surface where
+        // it met it: tangent to it there, or passing it at an offset of 1e-12
+        // to 1e-3 × scale on either side.
+        if (kind == AlgebraicRayKind::Grazing) {
             const auto p = surface_point(f, ray, *span);
             if (!p) continue;
             const Vec3d g = evaluate_gradient(gradient, *p).g;
@@ -85,9 +122,8 @@ std::vector<AlgebraicRay> algebraic_rays(const Object& object, int count, unsign
             ray = {touch - tangent * scale, tangent};
             span = object.bounds.clip(ray, 0.0, 4.0 * scale);
             if (!span) continue;
-            grazing = true;
         }
-        rays.push_back({ray, *span, oracle.first_root(ray, *span), grazing});
+        rays.push_back({ray, *span, oracle.first_root(ray, *span), kind});
     }
     return rays;
 }
