@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -189,12 +190,18 @@ TEST(AlgebraicSurfaces, WrongCallsAreLocatedErrorsThatShowTheSignature) {
     EXPECT_EQ(error_of("object { surface torus(1, 0.3 }"), "scene.zs:1:31: expected ',' or ')' but found '}'");
 }
 
-double coverage(const Image& image) {
+/// Where the pixels differ from the background, as a mask.
+std::vector<bool> covered_pixels(const Image& image) {
     const Vec3f bg = image.at(0, 0);
-    const auto covered = std::ranges::count_if(image.pixels, [&](const Vec3f& p) {
-        return std::abs(p.x - bg.x) + std::abs(p.y - bg.y) + std::abs(p.z - bg.z) > 1e-3f;
-    });
-    return static_cast<double>(covered) / static_cast<double>(image.pixels.size());
+    std::vector<bool> mask;
+    for (const auto& p : image.pixels) mask.push_back(std::abs(p.x - bg.x) + std::abs(p.y - bg.y) + std::abs(p.z - bg.z) > 1e-3f);
+    return mask;
+}
+
+/// The fraction of pixels that differ from the background.
+double coverage(const Image& image) {
+    const std::vector<bool> mask = covered_pixels(image);
+    return static_cast<double>(std::ranges::count(mask, true)) / static_cast<double>(mask.size());
 }
 
 TEST(AlgebraicSurfaces, EverySceneRendersWithSensibleCoverage) {
@@ -211,6 +218,30 @@ TEST(AlgebraicSurfaces, EverySceneRendersWithSensibleCoverage) {
         EXPECT_LT(c, 0.9) << entry.path();
     }
     EXPECT_GE(scenes, 17);
+}
+
+TEST(AlgebraicSurfaces, EverySolverSeesWhatTheIntervalMethodSees) {
+    // The interval method shares no root finding with the polynomial solvers:
+    // their images must cover the same pixels (up to a few silhouette pixels,
+    // where a ray grazes the surface closer than either can resolve).
+    namespace fs = std::filesystem;
+    for (const auto& entry : fs::directory_iterator(ZEROSET_SOURCE_DIR "/scenes/algebraic")) {
+        const Scene scene = load_scene(entry.path());
+        RenderSettings settings;
+        settings.width = 40;
+        settings.height = 30;
+        settings.method = Method::Interval;
+        const std::vector<bool> reference = covered_pixels(render(scene, settings).image);
+        settings.method = Method::Polynomial;
+        for (const PolynomialSolver solver : all_polynomial_solvers()) {
+            SCOPED_TRACE(entry.path().stem().string() + " / " + std::string(polynomial_solver_name(solver)));
+            settings.solver = solver;
+            const std::vector<bool> mask = covered_pixels(render(scene, settings).image);
+            const auto differing = std::inner_product(mask.begin(), mask.end(), reference.begin(), 0, std::plus<>(),
+                                                      std::not_equal_to<>());
+            EXPECT_LE(differing, 3);
+        }
+    }
 }
 
 }  // namespace
