@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 #include "support/surface_nodes.hpp"
 #include "zeroset/expr/evaluator.hpp"
@@ -91,6 +92,14 @@ std::vector<AlgebraicRay> algebraic_rays(const Object& object, int count, unsign
                      box.lo.z + unit(rng) * (box.hi.z - box.lo.z)};
     };
     std::vector<AlgebraicRay> rays;
+    // A ray the oracle cannot decide within its evaluation budget (a graze of
+    // a degenerate point, say) is left out and the next one drawn instead.
+    const auto add = [&](const Ray& ray, Span span, AlgebraicRayKind kind) {
+        try {
+            rays.push_back({ray, span, oracle.first_root(ray, span), kind});
+        } catch (const std::runtime_error&) {
+        }
+    };
     while (static_cast<int>(rays.size()) < count) {
         const AlgebraicRayKind kind = cycle[rays.size() % cycle.size()];
         if (kind == AlgebraicRayKind::Node) {
@@ -98,7 +107,7 @@ std::vector<AlgebraicRay> algebraic_rays(const Object& object, int count, unsign
             const Ray ray = node_ray(node, random_unit(rng), scale);
             const auto span = object.bounds.clip(ray, 0.0, 4.0 * scale);
             if (!span) continue;
-            rays.push_back({ray, *span, oracle.first_root(ray, *span), kind});
+            add(ray, *span, kind);
             continue;
         }
         // A random ray from outside through a random point of the bounds.
@@ -123,7 +132,7 @@ std::vector<AlgebraicRay> algebraic_rays(const Object& object, int count, unsign
             span = object.bounds.clip(ray, 0.0, 4.0 * scale);
             if (!span) continue;
         }
-        rays.push_back({ray, *span, oracle.first_root(ray, *span), kind});
+        add(ray, *span, kind);
     }
     return rays;
 }

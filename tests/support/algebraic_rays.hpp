@@ -31,7 +31,8 @@ struct AlgebraicRay {
 
 /// `count` rays for the scene's first object (deterministic for a seed):
 /// random and grazing in turn, or random, grazing and node in turn when the
-/// surface has singular points in its bounds.
+/// surface has singular points in its bounds. A ray the oracle cannot decide
+/// within its evaluation budget is replaced by the next one.
 std::vector<AlgebraicRay> algebraic_rays(const Object& object, int count, unsigned seed);
 
 }  // namespace zeroset::test

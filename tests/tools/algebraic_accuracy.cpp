@@ -1,5 +1,5 @@
 // The accuracy study of the polynomial method: for every scene in
-// scenes/algebraic, N rays (default 10 000: random, grazing and near-miss)
+// scenes/algebraic, N rays (default 10 000: random, grazing and near-miss, through nodes)
 // with MPFI first-hit references, and for every solver the miss rate, the
 // rate of hits where no root is (with the worst |H| / B at those hits: ≤ 1
 // means the arithmetic could not tell H from 0 there), and the max and
