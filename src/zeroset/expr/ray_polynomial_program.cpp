@@ -53,8 +53,9 @@ public:
         const SlotState& result = slots_[tape_.result_slot()];
         p_.result_offset_ = result.offset;
         p_.degree_ = result.degree;
-        p_.roundings_ = result.roundings;
-        p_.error_known_ = result.roundings < unknown_roundings;
+        // M is rounded down by at most (1 − u)^K: γ_2K covers both; the
+        // product radius() forms is rounded once more.
+        p_.radius_scale_ = gamma(2 * result.roundings) * (1.0 + 4.0 * unit_roundoff);
         return {std::move(p_), std::nullopt};
     }
 
@@ -80,7 +81,7 @@ private:
                                               static_cast<std::uint8_t>(b.degree), static_cast<std::uint8_t>(degree),
                                               a.offset, b.offset, out.offset};
         if (a.degree == 0 && b.degree == 0) {
-            run_step(step, p_.values_.data(), p_.magnitudes_.data());
+            RayPolynomialProgram::run(step, p_.values_.data(), p_.magnitudes_.data());
         } else {
             p_.steps_.push_back(step);
         }
@@ -164,62 +165,61 @@ private:
         }
     }
 
-public:
-    static void run_step(const RayPolynomialProgram::Step& s, double* v, double* m) {
-        const int da = s.a_degree;
-        const int db = s.b_degree;
-        double* vo = v + s.out;
-        double* mo = m + s.out;
-        const double* va = v + s.a;
-        const double* ma = m + s.a;
-        const double* vb = v + s.b;
-        const double* mb = m + s.b;
-        switch (s.kind) {
-            case Kind::Add:
-            case Kind::Sub: {
-                const double sign = s.kind == Kind::Add ? 1.0 : -1.0;
-                for (int i = 0; i <= s.out_degree; ++i) {
-                    const double x = i <= da ? va[i] : 0.0;
-                    const double y = i <= db ? vb[i] : 0.0;
-                    vo[i] = x + sign * y;
-                    mo[i] = (i <= da ? ma[i] : 0.0) + (i <= db ? mb[i] : 0.0);
-                }
-                break;
-            }
-            case Kind::Neg:
-                for (int i = 0; i <= da; ++i) {
-                    vo[i] = -va[i];
-                    mo[i] = ma[i];
-                }
-                break;
-            case Kind::Mul:
-                std::fill(vo, vo + s.out_degree + 1, 0.0);
-                std::fill(mo, mo + s.out_degree + 1, 0.0);
-                for (int i = 0; i <= da; ++i) {
-                    for (int j = 0; j <= db; ++j) {
-                        vo[i + j] += va[i] * vb[j];
-                        mo[i + j] += ma[i] * mb[j];
-                    }
-                }
-                break;
-            case Kind::Scale: {
-                const double d = vb[0];
-                const double magnitude = std::abs(d);
-                for (int i = 0; i <= da; ++i) {
-                    vo[i] = va[i] / d;
-                    mo[i] = ma[i] / magnitude;
-                }
-                break;
-            }
-        }
-    }
-
 private:
     const Tape& tape_;
     std::vector<SlotState> slots_;
     RayPolynomialProgram p_;
     RayPolynomialProgram::Refusal refusal_ = RayPolynomialProgram::Refusal::NotPolynomial;
 };
+
+void RayPolynomialProgram::run(const Step& s, double* v, double* m) {
+    const int da = s.a_degree;
+    const int db = s.b_degree;
+    double* vo = v + s.out;
+    double* mo = m + s.out;
+    const double* va = v + s.a;
+    const double* ma = m + s.a;
+    const double* vb = v + s.b;
+    const double* mb = m + s.b;
+    switch (s.kind) {
+        case StepKind::Add:
+        case StepKind::Sub: {
+            const double sign = s.kind == StepKind::Add ? 1.0 : -1.0;
+            for (int i = 0; i <= s.out_degree; ++i) {
+                const double x = i <= da ? va[i] : 0.0;
+                const double y = i <= db ? vb[i] : 0.0;
+                vo[i] = x + sign * y;
+                mo[i] = (i <= da ? ma[i] : 0.0) + (i <= db ? mb[i] : 0.0);
+            }
+            break;
+        }
+        case StepKind::Neg:
+            for (int i = 0; i <= da; ++i) {
+                vo[i] = -va[i];
+                mo[i] = ma[i];
+            }
+            break;
+        case StepKind::Mul:
+            std::fill(vo, vo + s.out_degree + 1, 0.0);
+            std::fill(mo, mo + s.out_degree + 1, 0.0);
+            for (int i = 0; i <= da; ++i) {
+                for (int j = 0; j <= db; ++j) {
+                    vo[i + j] += va[i] * vb[j];
+                    mo[i + j] += ma[i] * mb[j];
+                }
+            }
+            break;
+        case StepKind::Scale: {
+            const double d = vb[0];
+            const double magnitude = std::abs(d);
+            for (int i = 0; i <= da; ++i) {
+                vo[i] = va[i] / d;
+                mo[i] = ma[i] / magnitude;
+            }
+            break;
+        }
+    }
+}
 
 RayPolynomialProgram::Compiled RayPolynomialProgram::compile(const Tape& tape) {
     return RayPolynomialCompiler(tape).run();
@@ -245,12 +245,11 @@ void RayPolynomialProgram::evaluate(const Ray& ray, double t_c) {
         magnitudes_[at] = std::abs(centre) + std::abs(residual);
         magnitudes_[at + 1] = std::abs(d);
     }
-    for (const Step& s : steps_) RayPolynomialCompiler::run_step(s, values_.data(), magnitudes_.data());
+    for (const Step& s : steps_) run(s, values_.data(), magnitudes_.data());
 }
 
 double RayPolynomialProgram::radius(int i) const {
-    return gamma(2 * roundings_) * magnitudes_[result_offset_ + static_cast<std::size_t>(i)] *
-           (1.0 + 4.0 * unit_roundoff);
+    return radius_scale_ * magnitudes_[result_offset_ + static_cast<std::size_t>(i)];
 }
 
 }  // namespace zeroset

@@ -30,6 +30,7 @@
 // is false and the method falls back to trusting the rounded coefficients.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -61,7 +62,7 @@ public:
 
     /// F's structural degree — an upper bound on its degree along any ray.
     [[nodiscard]] int degree() const { return degree_; }
-    [[nodiscard]] bool error_known() const { return error_known_; }
+    [[nodiscard]] bool error_known() const { return std::isfinite(radius_scale_); }
 
     /// Computes the coefficients of G(s) = F(t_c + s) along the ray; valid
     /// until the next call. Allocates nothing.
@@ -85,6 +86,8 @@ private:
     };
 
     RayPolynomialProgram() = default;
+    /// Runs one step on the value and magnitude buffers.
+    static void run(const Step& s, double* v, double* m);
     [[nodiscard]] std::span<const double> result(const std::vector<double>& buffer) const {
         return {buffer.data() + result_offset_, static_cast<std::size_t>(degree_) + 1};
     }
@@ -95,8 +98,7 @@ private:
     std::uint32_t variable_offset_[3] = {0, 0, 0};
     std::uint32_t result_offset_ = 0;
     int degree_ = 0;
-    int roundings_ = 0;
-    bool error_known_ = true;
+    double radius_scale_ = 0.0;  // γ_2K (rounded up) for the result's K; +∞ when the bound is lost
 
     friend class RayPolynomialCompiler;
 };

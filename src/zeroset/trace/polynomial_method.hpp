@@ -1,7 +1,6 @@
 // The polynomial method (survey §§3.3–3.4): when f is a polynomial in x, y, z,
-// F(t) = f(x_o + t·x_d) is a polynomial in t whose exact coefficients come
-// from one walk of the tape in Polynomial arithmetic; a root solver then
-// finds its real roots in the span — closed forms up to degree 4, Sturm
+// F(t) = f(x_o + t·x_d) is a polynomial in t, and a root solver finds its
+// real roots in the span — closed forms up to degree 4, Sturm
 // sequences (van Wijk), Descartes' rule in the Bernstein basis (Hanrahan),
 // Laguerre's method, or the recursive-derivative solver after Yuksel (HPG
 // 2022). Sturm, Descartes and the fast solver isolate every real root;
@@ -9,8 +8,7 @@
 //
 // F is formed about the span's midpoint by a compiled program
 // (expr/ray_polynomial_program.hpp), with a proven bound R on its rounding,
-// so F is known as F̂ ± R. The first
-// hit is guarded (roots/polynomial_enclosure.hpp): an extremum of F̂ before
+// so F is known as F̂ ± R. The first hit is guarded (roots/polynomial_enclosure.hpp): an extremum of F̂ before
 // its first root that comes within R of 0 is a graze the arithmetic cannot
 // resolve, and counts as a hit rather than a miss. all_hits lists F̂'s roots.
 #pragma once
@@ -43,10 +41,10 @@ private:
     /// The real roots of F in [t0, t1], increasing, into `out`; their number.
     int solve(std::span<const double> f, double t0, double t1, std::span<double> out, TraceCounters& counters) const;
 
-    RootFinderSettings settings_;
     /// F̂ from the program's last run, with its coefficients' radii.
     PolynomialEnclosure current_enclosure();
 
+    RootFinderSettings settings_;
     RayPolynomialProgram program_;
     std::array<double, RayPolynomialProgram::max_degree + 1> radius_{};
 };
