@@ -6,6 +6,7 @@
 // is inside the surface for less than 2ε, or touches it — may be missed.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -151,6 +152,16 @@ struct TracerTally {
     int beyond_span = 0;    // a hit where the oracle proves no root in [t0, t1]
 };
 
+/// Rays reach a primitive through its transforms with directions of any
+/// length (eq. 36): every method runs on the suite with x_d scaled by these.
+/// A hit at t on the scaled ray is at t·s on the suite's own ray.
+constexpr std::array direction_scales{1.0, 0.37, 1e-3, 1e3};
+
+Ray scaled_ray(const SuiteRay& r, double s) { return {r.ray.origin, r.ray.dir * s}; }
+Span scaled_span(const SuiteRay& r, double s) { return {r.span.t0 / s, r.span.t1 / s}; }
+
+class RaySuiteScaled : public ::testing::TestWithParam<double> {};
+
 // The sphere tracer (ε = 1e-6 × scale) on every ray. Where the first root is
 // a crossing after which the ray stays inside for more than 4ε, it must
 // report a hit within 2ε of the reference: it never steps over the first root.
@@ -158,8 +169,9 @@ struct TracerTally {
 // rays, hits before the reference, and hits on rays whose root lies a hair
 // past t1 (found by the 2ε look-ahead that confirms a hit) are counted and
 // printed.
-TEST(RaySuite, SphereTracerNeverSkipsTheFirstHit) {
-    std::map<std::string, std::pair<std::unique_ptr<Tape>, std::unique_ptr<SphereTracer>>> tracers;
+TEST_P(RaySuiteScaled, SphereTracerNeverSkipsTheFirstHit) {
+    const double s = GetParam();
+    std::map<std::string, std::unique_ptr<Tape>> tapes;
     std::map<std::string, TracerTally> tallies;
     std::map<std::string, int> reported;
     const auto report = [&](const std::string& what, const SuiteRay& r, std::optional<double> hit) {
@@ -167,15 +179,16 @@ TEST(RaySuite, SphereTracerNeverSkipsTheFirstHit) {
             std::printf("sphere tracer, %s: %s hit=%.17g\n", what.c_str(), describe(r).c_str(), hit.value_or(NAN));
     };
     for (const SuiteRay& r : suite()) {
-        auto& [tape, tracer] = tracers[r.surface];
+        auto& tape = tapes[r.surface];
         const double eps = 1e-6 * r.scale, slack = 1e-12 * r.scale;
-        if (!tracer) {
-            tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
-            tracer = std::make_unique<SphereTracer>(*tape, SphereTraceSettings{.epsilon = eps});
-        }
+        if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
+        const SphereTracer tracer(SphereTraceSettings{.epsilon = eps});
+        RayFunction h(*tape);
+        h.set_ray(scaled_ray(r, s));
         TracerTally& tally = tallies[r.surface];
         TraceCounters counters;
-        const std::optional<double> hit = tracer->first_hit(r.ray, r.span, counters);
+        std::optional<double> hit = tracer.first_hit(h, scaled_span(r, s), counters);
+        if (hit) *hit *= s;
         if (hit) ++tally.hits;
         if (!hit && r.t_ref) ++tally.misses;
         if (!r.t_ref) {
@@ -206,15 +219,10 @@ TEST(RaySuite, SphereTracerNeverSkipsTheFirstHit) {
         }
     }
     for (const auto& [surface, t] : tallies)
-        std::printf("sphere tracer on %-11s: %4d hits, %3d misses, %3d grazes passed, %d early, %2d beyond the span\n",
-                    surface.c_str(), t.hits, t.misses, t.grazes_passed, t.early_hits, t.beyond_span);
+        std::printf("sphere tracer, |x_d| = %g, on %-11s: %4d hits, %3d misses, %3d grazes passed, %d early, %2d beyond "
+                    "the span\n",
+                    s, surface.c_str(), t.hits, t.misses, t.grazes_passed, t.early_hits, t.beyond_span);
 }
-
-}  // namespace
-}  // namespace zeroset::test
-
-namespace zeroset::test {
-namespace {
 
 struct StrictTally {
     int rays = 0, exact = 0, numerically_zero_early = 0;
@@ -232,17 +240,18 @@ struct StrictTally {
 ///   from 0 in double precision: a ray grazing the surface closer than
 ///   rounding can resolve. There, the enclosure of H over the finest segment
 ///   at the hit must contain 0; such hits are counted and printed.
-void expect_strict(Method method) {
+void expect_strict(Method method, double s) {
     std::map<std::string, std::unique_ptr<Tape>> tapes;
     std::map<std::string, StrictTally> tallies;
     for (const SuiteRay& r : suite()) {
         auto& tape = tapes[r.surface];
         if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
         RayFunction h(*tape);
-        h.set_ray(r.ray);
+        h.set_ray(scaled_ray(r, s));
         TraceCounters counters;
         const RootFinderSettings settings = settings_for_scale(r.scale);
-        const HitResult hit = make_root_finder(method, *tape, settings)->first_hit(h, r.span, counters);
+        HitResult hit = make_root_finder(method, *tape, settings)->first_hit(h, scaled_span(r, s), counters);
+        if (hit.t) *hit.t *= s;
         StrictTally& t = tallies[r.surface];
         ++t.rays;
         const bool well_conditioned = r.kind == RefKind::Simple && r.slope >= 1e-6;
@@ -262,19 +271,28 @@ void expect_strict(Method method) {
             continue;
         }
         ++t.numerically_zero_early;
-        const Interval there = h.enclose(*hit.t, *hit.t + settings.tangent_width, counters).v;
+        RayFunction unscaled(*tape);
+        unscaled.set_ray(r.ray);
+        const Interval there = unscaled.enclose(*hit.t, *hit.t + settings.tangent_width, counters).v;
         EXPECT_TRUE(there.contains(0.0)) << method_name(method) << " hit early where H is not 0: " << describe(r)
                                          << " hit=" << *hit.t << " H in [" << there.lo << ", " << there.hi << "]";
     }
     for (const auto& [surface, t] : tallies)
-        std::printf("%-8s on %-11s: %4d rays, 0 misses, %4d exact (worst simple root %.1e x scale), %3d early where H is 0 "
-                    "to double precision\n",
-                    std::string(method_name(method)).c_str(), surface.c_str(), t.rays, t.exact, t.worst_exact,
+        std::printf("%-8s |x_d| = %-5g on %-11s: %4d rays, 0 misses, %4d exact (worst simple root %.1e x scale), %3d "
+                    "early where H is 0 to double precision\n",
+                    std::string(method_name(method)).c_str(), s, surface.c_str(), t.rays, t.exact, t.worst_exact,
                     t.numerically_zero_early);
 }
 
-TEST(RaySuite, IntervalMethodNeverMissesAndIsExact) { expect_strict(Method::Interval); }
-TEST(RaySuite, LgMethodNeverMissesAndIsExact) { expect_strict(Method::Lg); }
+TEST_P(RaySuiteScaled, IntervalMethodNeverMissesAndIsExact) { expect_strict(Method::Interval, GetParam()); }
+TEST_P(RaySuiteScaled, LgMethodNeverMissesAndIsExact) { expect_strict(Method::Lg, GetParam()); }
+
+std::string scale_name(const ::testing::TestParamInfo<double>& param) {
+    constexpr std::array<const char*, direction_scales.size()> names{"unit", "times_0_37", "times_1e_3", "times_1e3"};
+    return names[param.index];
+}
+
+INSTANTIATE_TEST_SUITE_P(DirectionLengths, RaySuiteScaled, ::testing::ValuesIn(direction_scales), scale_name);
 
 }  // namespace
 }  // namespace zeroset::test

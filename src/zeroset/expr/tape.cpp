@@ -38,7 +38,7 @@ bool is_leaf(Op op) { return op_arity(op) == 0; }
 
 }  // namespace
 
-Tape::Tape(const Expr& root, SlotLayout layout) {
+Tape::Tape(const Expr& root, SlotLayout layout) : layout_(layout) {
     const std::vector<Expr> order = topological_order(root);
 
     // Value number of each node = its index in `order`; find each value's last use.

@@ -39,6 +39,7 @@ public:
     [[nodiscard]] const std::vector<std::pair<std::uint32_t, double>>& constants() const { return constants_; }
     [[nodiscard]] std::uint32_t slot_count() const { return slot_count_; }
     [[nodiscard]] std::uint32_t result_slot() const { return result_slot_; }
+    [[nodiscard]] SlotLayout layout() const { return layout_; }
     /// True when every op is +, −, ×, neg, square or powi with n ≥ 0.
     [[nodiscard]] bool is_polynomial() const;
 
@@ -49,6 +50,7 @@ private:
     std::vector<std::pair<std::uint32_t, double>> constants_;
     std::uint32_t slot_count_ = 3;
     std::uint32_t result_slot_ = 0;
+    SlotLayout layout_ = SlotLayout::OnePerValue;
 };
 
 }  // namespace zeroset

@@ -3,6 +3,7 @@
 #include "zeroset/expr/tape_pruner.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace zeroset {
 
@@ -12,6 +13,8 @@ TapePruner::TapePruner(const Tape& full)
       live_(full.slot_count(), 0),
       aliased_(full.slot_count(), 0),
       alias_of_(full.slot_count(), 0) {
+    if (full.layout() != SlotLayout::OnePerValue)
+        throw std::invalid_argument("TapePruner: the tape must use SlotLayout::OnePerValue");
     for (const auto& [slot, value] : full.constants()) slots_[slot] = Interval(value);
 }
 

@@ -36,7 +36,7 @@ HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& coun
             continue;
         }
         if (!mean_value_form(h, s, e.d1, counters).contains(0.0)) continue;  // a near miss
-        if (s.b - s.a > settings_.tangent_width && segments.can_split(s)) {
+        if (split_undecided(h, s, e, segments)) {
             segments.split(s, s.a);  // step 5: divide and conquer, front half first
             continue;
         }

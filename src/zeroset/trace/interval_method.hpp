@@ -4,7 +4,9 @@
 // a sign change at its ends proves and guarded Newton refines to full double
 // precision. A segment that still may hold a root at `tangent_width` is a
 // tangent (double) root, or a feature too thin to tell apart: it is reported
-// as a hit at its left end.
+// as a hit at its left end — unless a min, max or abs switches branch inside
+// it (a CSG edge, §7): that is resolved on to the resolution of doubles, so a
+// ray passing just outside an edge is not taken for a hit.
 #pragma once
 
 #include "zeroset/trace/isolating_method.hpp"

@@ -1,6 +1,8 @@
 // First hit and all hits over an isolation walk.
 #include "zeroset/trace/isolating_method.hpp"
 
+#include <cmath>
+
 namespace zeroset {
 
 HitResult IsolatingMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {
@@ -17,9 +19,17 @@ HitResult IsolatingMethod::first_hit(RayFunction& h, Span span, TraceCounters& c
     return {std::nullopt, status};
 }
 
+bool IsolatingMethod::split_undecided(const RayFunction& h, const Segment& s, const Jet<Interval>& e,
+                                      const SegmentStack& segments) const {
+    if (!segments.can_split(s)) return false;
+    if (s.b - s.a > h.to_t(settings_.tangent_width)) return true;
+    const bool kink = e.d2.is_empty() || !std::isfinite(e.d2.magnitude());
+    return kink && SegmentStack::above_resolution(s);
+}
+
 HitStatus IsolatingMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
     const std::size_t before = hits.size();
-    const double merge_width = 4.0 * settings_.tangent_width;
+    const double merge_width = 4.0 * h.to_t(settings_.tangent_width);
     auto collect = [&](double t) {
         // A root on the boundary of two segments is found from both sides, and
         // a tangent root may span neighbouring finest segments: keep one.

@@ -6,6 +6,7 @@
 
 #include "zeroset/trace/root_finder.hpp"
 #include "zeroset/trace/root_visitor.hpp"
+#include "zeroset/trace/segment_stack.hpp"
 
 namespace zeroset {
 
@@ -21,6 +22,15 @@ protected:
     /// returns false. Returns Failed where the search broke down (H undefined,
     /// NaN, a budget spent), else NoHit.
     virtual HitStatus isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) = 0;
+
+    /// Whether a segment that may still hold a root is split again (else it
+    /// is taken as a tangent root). Segments wider than the tangent width
+    /// are split. A narrower one is split on, down to the resolution of
+    /// doubles, where H″ is unbounded over it: there a min, max or abs
+    /// switches branch (a kink, §7) rather than H touching 0 smoothly, and
+    /// a ray passing a hair outside an edge must not count as a hit.
+    [[nodiscard]] bool split_undecided(const RayFunction& h, const Segment& s, const Jet<Interval>& e,
+                                       const SegmentStack& segments) const;
 
     RootFinderSettings settings_;
 };

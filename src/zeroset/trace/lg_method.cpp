@@ -39,12 +39,16 @@ HitStatus LgMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, 
         const Jet<Interval> at_mid = h.enclose(tm, tm, counters);
         if (at_mid.v.is_empty()) return HitStatus::Failed;
         if (least_of(at_mid.v) > lip_h * r) continue;  // no root within L·r of t_m
-        if (least_of(at_mid.d1) > lip_dh * r) {        // step 3: H is monotone
+        // Step 3: H is monotone. Where G is unbounded (a kink of min, max or
+        // abs inside the segment) the enclosure of H′ may still show it.
+        const bool monotone = least_of(at_mid.d1) > lip_dh * r ||
+                              (!std::isfinite(lip_dh) && !e.d1.is_empty() && !e.d1.contains(0.0));
+        if (monotone) {
             if (const auto root = refine_sign_change(h, s.a, s.b, counters))
                 if (!visit(*root)) return HitStatus::Ok;  // 3a: a single root
             continue;                                     // 3b: none
         }
-        if (r > 0.5 * settings_.tangent_width && segments.can_split(s)) {
+        if (split_undecided(h, s, e, segments)) {
             segments.split(s, s.a);  // step 4: divide and conquer, front half first
             continue;
         }

@@ -5,8 +5,11 @@
 // guarded Newton. Otherwise the segment is halved. L and G come from the
 // interval enclosures of H′ and H″ over the segment (Jet<Interval>), so no
 // constant is ever supplied by hand; the enclosure of H, which comes with
-// them, also drops segments where it excludes 0. Segments still undecided at
-// `tangent_width` are reported as tangent hits, as in the interval method.
+// them, also drops segments where it excludes 0. Where G is unbounded — a
+// min, max or abs switching branch inside the segment — the enclosure of H′
+// may still prove H monotone. Segments still undecided at `tangent_width`
+// are reported as tangent hits, kinks resolved to the resolution of doubles
+// first, as in the interval method.
 #pragma once
 
 #include "zeroset/trace/isolating_method.hpp"

@@ -1,11 +1,26 @@
 // RayFunction: the surface seen along one ray, H(t) = f(x_o + t·x_d) (survey
 // eqs. 7 and 13), in every form the intersection methods need — H at a point,
 // H with H′ and H″ at a point (eqs. 19–21), and enclosures of H, H′, H″ over
-// a whole segment of t (Fig. 9 needs H′, Fig. 11 needs H″). It counts what it
-// evaluates, so methods can be compared on the same ray.
+// a whole segment of t (Fig. 9 needs H′, Fig. 11 needs H″).
+//
+// It is the one owner of everything that belongs to f along the ray: the
+// tape and its evaluators, the tapes pruned to parts of the ray, the record
+// of where f was NaN, and |x_d|. Methods never keep their own evaluators.
+// |x_d| matters because rays reach a primitive through its transforms
+// (eq. 36) with directions of any length: a tolerance or a distance bound
+// given in space becomes one in t by dividing by |x_d|.
+//
+// Every evaluation is counted, so methods can be compared on the same ray.
 #pragma once
 
+#include <cstddef>
+#include <optional>
+#include <vector>
+
 #include "zeroset/expr/evaluator.hpp"
+#include "zeroset/expr/lipschitz.hpp"
+#include "zeroset/expr/tape_pruner.hpp"
+#include "zeroset/math/box3.hpp"
 #include "zeroset/math/ray.hpp"
 #include "zeroset/trace/trace_counters.hpp"
 
@@ -13,63 +28,74 @@ namespace zeroset {
 
 class RayFunction {
 public:
-    explicit RayFunction(const Tape& tape) : point_(tape), jet_(tape), value_enclosure_(tape), enclosure_(tape) {}
+    /// Pruning (prune()) needs a tape with SlotLayout::OnePerValue.
+    explicit RayFunction(const Tape& tape);
 
-    void set_ray(const Ray& ray) { ray_ = ray; }
+    /// Starts a new ray on the full tape.
+    void set_ray(const Ray& ray);
     [[nodiscard]] const Ray& ray() const { return ray_; }
+    /// |x_d|, rounded up: a length ℓ in space is ℓ / dir_length() in t.
+    [[nodiscard]] double dir_length() const { return dir_length_; }
+    /// A length in space as a length in t along this ray.
+    [[nodiscard]] double to_t(double length) const { return length / dir_length_; }
 
     /// H(t).
-    double value(double t, TraceCounters& counters) {
-        ++counters.point_evaluations;
-        const Vec3d p = ray_.at(t);
-        return checked(point_(p.x, p.y, p.z), t, counters);
-    }
+    double value(double t, TraceCounters& counters);
     /// H(t), H′(t), H″(t).
-    Jet<double> jet(double t, TraceCounters& counters) {
-        ++counters.point_evaluations;
-        Jet<double> j = evaluate_along_ray(jet_, ray_.origin, ray_.dir, t);
-        j.v = checked(j.v, t, counters);
-        return j;
-    }
+    Jet<double> jet(double t, TraceCounters& counters);
     /// An enclosure of H(t) at one t, free of rounding doubts (the point
     /// x_o + t·x_d itself is enclosed, not rounded).
-    Interval enclose_value(double t, TraceCounters& counters) {
-        ++counters.interval_evaluations;
-        const Interval ti(t);
-        const auto coordinate = [&ti](double o, double d) { return Interval(o) + Interval(d) * ti; };
-        return value_enclosure_(coordinate(ray_.origin.x, ray_.dir.x), coordinate(ray_.origin.y, ray_.dir.y),
-                                coordinate(ray_.origin.z, ray_.dir.z));
-    }
+    Interval enclose_value(double t, TraceCounters& counters);
     /// Enclosures of H, H′ and H″ over t ∈ [a, b].
-    Jet<Interval> enclose(double a, double b, TraceCounters& counters) {
-        ++counters.interval_evaluations;
-        Jet<Interval> j = evaluate_along_ray(enclosure_, ray_.origin, ray_.dir, Interval(a, b));
-        if (j.v.is_empty()) note_nan(ray_.at(0.5 * (a + b)), counters);  // undefined all over the segment
-        return j;
+    Jet<Interval> enclose(double a, double b, TraceCounters& counters);
+    /// A Lipschitz bound of H over t ∈ [a, b]: L·|x_d|, where L bounds |∇f|
+    /// over the box around the segment (expr/lipschitz.hpp, eq. 30); +∞
+    /// where ∇f has no finite enclosure. (The enclosure of H′ from enclose()
+    /// is a bound too, often tighter, but Jet<Interval> costs about 1.7 times
+    /// Dual<Interval> on bear.vm, which more than eats the saved steps.)
+    double lipschitz(double a, double b, TraceCounters& counters);
+
+    /// Prunes the tape to the axis-aligned box around the ray over [a, b]
+    /// (expr/tape_pruner.hpp): the tape at `depth` − 1 (the full tape for
+    /// depth 0) is pruned into the tape at `depth`, and every evaluation
+    /// walks it until the next prune() or set_ray(). Returns f over the box.
+    /// A caller splitting the ray into nested segments prunes each one at its
+    /// nesting depth, below SegmentStack::max_depth.
+    Interval prune(std::size_t depth, double a, double b, TraceCounters& counters);
+    /// The box around the ray over [a, b], with the rounding of x_o + t·x_d enclosed.
+    [[nodiscard]] Box3 segment_box(double a, double b) const;
+    /// Goes back to the full tape (valid everywhere), as after set_ray().
+    void use_full_tape() {
+        if (pruned_now_) use_tape(*tape_);
     }
 
     /// Records that H is NaN at p (counted in TraceCounters::nan_evaluations).
-    void note_nan(const Vec3d& p, TraceCounters& counters) {
-        ++counters.nan_evaluations;
-        remember_nan_point(p);
-    }
-    /// Remembers a NaN that someone else already counted.
-    void remember_nan_point(const Vec3d& p) { last_nan_point_ = p; }
+    void note_nan(const Vec3d& p, TraceCounters& counters);
     /// Where H last evaluated to NaN.
     [[nodiscard]] const Vec3d& last_nan_point() const { return last_nan_point_; }
+
+    [[nodiscard]] const Tape& tape() const { return *tape_; }
 
 private:
     double checked(double value, double t, TraceCounters& counters) {
         if (value != value) note_nan(ray_.at(t), counters);
         return value;
     }
+    /// Points every evaluator at `tape` (the full tape or a pruned one).
+    void use_tape(const Tape& tape);
 
+    const Tape* tape_;
     Vec3d last_nan_point_{};
     Ray ray_{};
+    double dir_length_ = 1.0;
     Evaluator<double> point_;
     Evaluator<Jet<double>> jet_;
     Evaluator<Interval> value_enclosure_;
     Evaluator<Jet<Interval>> enclosure_;
+    Evaluator<Dual<Interval>> slope_;
+    std::optional<TapePruner> pruner_;  // made on the first prune()
+    std::vector<Tape> pruned_;          // pruned_[d]: the tape pruned at depth d
+    bool pruned_now_ = false;           // an evaluator walks a pruned tape
 };
 
 }  // namespace zeroset

@@ -33,7 +33,7 @@ RootFinderSettings settings_for_scale(double scale) {
 
 std::unique_ptr<RootFinder> make_root_finder(Method method, const Tape& tape, const RootFinderSettings& settings) {
     switch (method) {
-        case Method::Sphere: return std::make_unique<SphereMethod>(tape, settings);
+        case Method::Sphere: return std::make_unique<SphereMethod>(settings);
         case Method::Interval: return std::make_unique<IntervalMethod>(settings);
         case Method::Lg: return std::make_unique<LgMethod>(settings);
         case Method::Polynomial: return std::make_unique<PolynomialMethod>(tape, settings);

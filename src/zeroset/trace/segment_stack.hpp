@@ -29,6 +29,12 @@ public:
     [[nodiscard]] bool can_split(const Segment& s) const {
         return size_ + 2 <= items_.size() && s.depth + 1 < max_depth;
     }
+    /// True while the segment's midpoint is a double strictly inside it:
+    /// narrower segments are at the resolution of doubles.
+    [[nodiscard]] static bool above_resolution(const Segment& s) {
+        const double mid = 0.5 * (s.a + s.b);
+        return s.a < mid && mid < s.b;
+    }
     [[nodiscard]] bool empty() const { return size_ == 0; }
     Segment pop() { return items_[--size_]; }
 

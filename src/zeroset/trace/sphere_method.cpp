@@ -7,20 +7,15 @@
 
 namespace zeroset {
 
-SphereMethod::SphereMethod(const Tape& tape, const RootFinderSettings& settings)
-    : settings_(settings), tracer_(tape, {settings.sphere_epsilon, 16}) {}
+SphereMethod::SphereMethod(const RootFinderSettings& settings) : tracer_({settings.sphere_epsilon, 16}) {}
 
 std::optional<double> SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCounters& counters) {
     const std::uint64_t nans = counters.nan_evaluations;
-    const auto t = tracer_.first_crossing(h.ray(), span, side, counters);
-    if (counters.nan_evaluations != nans) {
-        h.remember_nan_point(tracer_.last_nan_point());
-        return std::nullopt;
-    }
-    if (!t) return std::nullopt;
+    const auto t = tracer_.first_crossing(h, span, side, counters);
+    if (!t || counters.nan_evaluations != nans) return std::nullopt;
     // The surface is crossed in [t, t + 2ε]: refine to full precision. With
     // no sign change before t1, the crossing lies just past the span.
-    const double end = std::min(*t + 2.0 * settings_.sphere_epsilon, span.t1);
+    const double end = std::min(*t + 2.0 * tracer_.step_epsilon(h, *t), span.t1);
     return refine_sign_change(h, *t, end, counters);
 }
 
@@ -45,7 +40,7 @@ HitStatus SphereMethod::all_hits(RayFunction& h, Span span, std::vector<double>&
         if (!root) break;
         hits.push_back(*root);
         // Resume just past the root, on the other side of the surface.
-        t = std::max(*root, t) + 2.0 * settings_.sphere_epsilon;
+        t = std::max(*root, t) + 2.0 * tracer_.step_epsilon(h, *root);
         side = -side;
     }
     if (counters.nan_evaluations != nans) return HitStatus::Failed;

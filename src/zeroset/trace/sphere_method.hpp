@@ -11,8 +11,7 @@ namespace zeroset {
 
 class SphereMethod : public RootFinder {
 public:
-    /// `tape` must use SlotLayout::OnePerValue.
-    SphereMethod(const Tape& tape, const RootFinderSettings& settings);
+    explicit SphereMethod(const RootFinderSettings& settings);
 
     HitResult first_hit(RayFunction& h, Span span, TraceCounters& counters) override;
     HitStatus all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) override;
@@ -22,7 +21,6 @@ private:
     /// leaving it when −1), refined.
     std::optional<double> crossing(RayFunction& h, Span span, double side, TraceCounters& counters);
 
-    RootFinderSettings settings_;
     SphereTracer tracer_;
 };
 

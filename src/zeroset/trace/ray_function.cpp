@@ -1,0 +1,88 @@
+// Evaluations along one ray, on the full tape or a pruned one.
+#include "zeroset/trace/ray_function.hpp"
+
+#include <cmath>
+
+#include "zeroset/trace/segment_stack.hpp"
+
+namespace zeroset {
+
+RayFunction::RayFunction(const Tape& tape)
+    : tape_(&tape), point_(tape), jet_(tape), value_enclosure_(tape), enclosure_(tape), slope_(tape) {}
+
+void RayFunction::set_ray(const Ray& ray) {
+    ray_ = ray;
+    const double length = std::sqrt(dot(ray.dir, ray.dir));
+    dir_length_ = length > 0.0 ? rounding::up(length) : 0.0;
+    use_full_tape();
+}
+
+double RayFunction::value(double t, TraceCounters& counters) {
+    ++counters.point_evaluations;
+    const Vec3d p = ray_.at(t);
+    return checked(point_(p.x, p.y, p.z), t, counters);
+}
+
+Jet<double> RayFunction::jet(double t, TraceCounters& counters) {
+    ++counters.point_evaluations;
+    Jet<double> j = evaluate_along_ray(jet_, ray_.origin, ray_.dir, t);
+    j.v = checked(j.v, t, counters);
+    return j;
+}
+
+Interval RayFunction::enclose_value(double t, TraceCounters& counters) {
+    ++counters.interval_evaluations;
+    const Interval ti(t);
+    const auto coordinate = [&ti](double o, double d) { return Interval(o) + Interval(d) * ti; };
+    return value_enclosure_(coordinate(ray_.origin.x, ray_.dir.x), coordinate(ray_.origin.y, ray_.dir.y),
+                            coordinate(ray_.origin.z, ray_.dir.z));
+}
+
+Jet<Interval> RayFunction::enclose(double a, double b, TraceCounters& counters) {
+    ++counters.interval_evaluations;
+    Jet<Interval> j = evaluate_along_ray(enclosure_, ray_.origin, ray_.dir, Interval(a, b));
+    if (j.v.is_empty()) note_nan(ray_.at(0.5 * (a + b)), counters);  // undefined all over the segment
+    return j;
+}
+
+double RayFunction::lipschitz(double a, double b, TraceCounters& counters) {
+    ++counters.gradient_evaluations;
+    const double constant = lipschitz_bound(slope_, segment_box(a, b)).constant;
+    return rounding::up(constant * dir_length_);
+}
+
+Box3 RayFunction::segment_box(double a, double b) const {
+    const auto coordinate = [a, b](double o, double d) { return Interval(o) + Interval(d) * Interval(a, b); };
+    const Interval cx = coordinate(ray_.origin.x, ray_.dir.x), cy = coordinate(ray_.origin.y, ray_.dir.y),
+                   cz = coordinate(ray_.origin.z, ray_.dir.z);
+    return {{cx.lo, cy.lo, cz.lo}, {cx.hi, cy.hi, cz.hi}};
+}
+
+Interval RayFunction::prune(std::size_t depth, double a, double b, TraceCounters& counters) {
+    ++counters.interval_evaluations;
+    if (!pruner_) {
+        pruner_.emplace(*tape_);
+        pruned_.resize(SegmentStack::max_depth);
+    }
+    const Tape& parent = depth == 0 ? *tape_ : pruned_[depth - 1];
+    Tape& tape = pruned_[depth];
+    const Interval f = pruner_->prune(parent, segment_box(a, b), tape);
+    use_tape(tape);
+    return f;
+}
+
+void RayFunction::note_nan(const Vec3d& p, TraceCounters& counters) {
+    ++counters.nan_evaluations;
+    last_nan_point_ = p;
+}
+
+void RayFunction::use_tape(const Tape& tape) {
+    point_.rebind(tape);
+    jet_.rebind(tape);
+    value_enclosure_.rebind(tape);
+    enclosure_.rebind(tape);
+    slope_.rebind(tape);
+    pruned_now_ = &tape != tape_;
+}
+
+}  // namespace zeroset
