@@ -102,7 +102,7 @@ RayInputs make_ray_inputs(int degree) {
     RayInputs inputs;
     const zeroset::Scene scene =
         zeroset::load_scene(std::string(ZEROSET_SOURCE_DIR) + "/scenes/algebraic/" + scene_of_degree(degree));
-    const zeroset::Object& object = scene.objects.at(0);
+    const zeroset::Object& object = placed_objects(scene).at(0).object();
     inputs.tape = std::make_unique<zeroset::Tape>(object.surface);
     const zeroset::Tape& tape = *inputs.tape;
     auto compiled = zeroset::RayPolynomialProgram::compile(tape);

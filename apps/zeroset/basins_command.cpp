@@ -75,8 +75,8 @@ int basins_command(const std::vector<std::string>& args) {
                   vector_option(options, "--dir").value_or(survey_dir)};
 
     const Scene scene = options.positional().empty() ? default_scene() : load_scene(options.positional()[0]);
-    const Object& object = find_object(scene, options.value("--object"));
-    const BasinMap map = newton_basins(Tape(object.surface), ray, settings);
+    const PlacedObject object = find_object(scene, options.value("--object"));
+    const BasinMap map = newton_basins(Tape(object.object().surface), to_object_space(object, ray), settings);
     write_image(map.image, output);
 
     std::string roots;

@@ -108,8 +108,9 @@ int ray_command(const std::vector<std::string>& args) {
     const std::optional<double> newton_from = number_option(options, "--newton-from");
 
     const Scene scene = default_scene_used ? default_scene() : load_scene(options.positional()[0]);
-    const Object& object = find_object(scene, options.value("--object"));
-    const RaySubject subject{default_scene_used ? "<default>" : options.positional()[0], object.name, newton_from};
+    const PlacedObject placed = find_object(scene, options.value("--object"));
+    const Object& object = placed.object();
+    const RaySubject subject{default_scene_used ? "<default>" : options.positional()[0], placed.name(), newton_from};
 
     const Tape tape(object.surface, SlotLayout::OnePerValue);
     RootFinderSettings settings = settings_for_scale(object.bounds.enclosing_box().diagonal());
@@ -122,18 +123,20 @@ int ray_command(const std::vector<std::string>& args) {
     if (const auto file = options.value("--compare")) {
         if (!plot_file) throw UsageError("--compare adds a curve to the plot: give --plot too");
         compare_scene = load_scene(*file);
-        const Object& other = find_object(*compare_scene, options.value("--compare-object"));
-        compare_tape.emplace(other.surface);
+        const PlacedObject other = find_object(*compare_scene, options.value("--compare-object"));
+        if (!other.to_scene.is_identity() || !placed.to_scene.is_identity())
+            throw UsageError("--compare draws both objects along one ray: neither may be transformed");
+        compare_tape.emplace(other.object().surface);
         const std::string file_name = std::filesystem::path(*file).filename().string();
-        compared = ComparedFunction{"H of " + (other.name.empty() ? file_name : other.name + " (" + file_name + ")"),
-                                    &*compare_tape};
+        compared = ComparedFunction{
+            "H of " + (other.name().empty() ? file_name : other.name() + " (" + file_name + ")"), &*compare_tape};
     } else if (options.value("--compare-object")) {
         throw UsageError("--compare-object names an object of the --compare scene: give --compare too");
     }
 
     std::string output;
     for (const Ray& ray : rays) {
-        const RayProbe probe = probe_ray(tape, object.bounds, ray, methods, settings);
+        const RayProbe probe = probe_ray(tape, object.bounds, to_object_space(placed, ray), methods, settings);
         if (plot_file) {
             if (!probe.span) throw std::runtime_error("cannot plot: the ray misses the object's bounds");
             write_svg_plot(ray_plot(subject, probe, tape, compared), *plot_file);

@@ -54,16 +54,24 @@ std::optional<std::pair<double, double>> range_option(const Options& options, co
     return std::pair{(*v)[0], (*v)[1]};
 }
 
-const Object& find_object(const Scene& scene, const std::optional<std::string>& name) {
-    if (scene.objects.empty()) throw UsageError("the scene has no objects");
-    if (!name) return scene.objects.front();
+PlacedObject find_object(const Scene& scene, const std::optional<std::string>& name) {
+    const std::vector<PlacedObject> objects = placed_objects(scene);
+    if (objects.empty()) throw UsageError("the scene has no objects");
+    if (!name) return objects.front();
     std::string names;
-    for (const Object& object : scene.objects) {
-        if (object.name == *name) return object;
-        if (!object.name.empty()) names += (names.empty() ? "'" : ", '") + object.name + "'";
+    for (const PlacedObject& object : objects) {
+        if (object.name() == *name) return object;
+        const std::string quoted = "'" + object.name() + "'";
+        if (!object.name().empty() && names.find(quoted) == std::string::npos)
+            names += (names.empty() ? "" : ", ") + quoted;
     }
     throw UsageError("the scene has no object named '" + *name + "'" +
                      (names.empty() ? std::string(" (its objects have no names)") : " (it has " + names + ")"));
+}
+
+Ray to_object_space(const PlacedObject& object, const Ray& ray) {
+    const Mat4 to_object = object.to_scene.inverse().value();  // transforms are checked invertible when read
+    return {to_object.transform_point(ray.origin), to_object.transform_vector(ray.dir)};
 }
 
 }  // namespace zeroset::cli

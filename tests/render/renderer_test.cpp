@@ -20,11 +20,11 @@ Scene blinn_scene() {
     s.camera.fov_degrees = 40;
     s.lights.push_back({Light::Kind::Point, {-10, 10, -10}, {}, {1, 1, 1}, true});
     Object o;
-    o.name = "blobs";
     o.surface = Expr(1.0) - exp(-sphere({1.2, 0, 0}, 1)) - exp(-sphere({-1.2, 0, 0}, 1));
     o.bounds = Bounds::make_box({{-3.5, -2.5, -2.5}, {3.5, 2.5, 2.5}});
-    o.material.color = {0.8, 0.3, 0.2};
-    s.objects.push_back(o);
+    Material red;
+    red.color = {0.8, 0.3, 0.2};
+    s.nodes.push_back(make_object_node(o, "blobs", red));
     return s;
 }
 
@@ -109,7 +109,7 @@ TEST(Renderer, ShadowsDarkenTheFloorUnderTheBlob) {
     Object floor;
     floor.surface = var_y() + 1.5;
     floor.bounds = Bounds::make_box({{-20, -2, -20}, {20, -1, 20}});
-    scene.objects = {ball, floor};
+    scene.nodes = {make_object_node(ball), make_object_node(floor)};
     const RenderResult lit = render(scene, small());
     scene.lights[0].casts_shadows = false;
     const RenderResult unshadowed = render(scene, small());
@@ -130,7 +130,7 @@ TEST(Renderer, SphereSdfWithUnboundedGradientNearTheCentreStillRenders) {
     Object o;
     o.surface = sqrt(square(var_x()) + square(var_y()) + square(var_z())) - 1.0;
     o.bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
-    scene.objects.push_back(o);
+    scene.nodes.push_back(make_object_node(o));
     const RenderResult r = render(scene, small());
     const double expected = M_PI * std::pow(std::tan(std::asin(0.25)) / std::tan(20.0 * M_PI / 180.0), 2) *
                             (60.0 * 60.0) / (4.0 * 80.0 * 60.0);
@@ -140,10 +140,9 @@ TEST(Renderer, SphereSdfWithUnboundedGradientNearTheCentreStillRenders) {
 TEST(Renderer, NanSurfaceIsAnErrorNamingTheObject) {
     Scene scene;
     Object o;
-    o.name = "bad";
     o.surface = sqrt(var_x()) + square(var_y()) + square(var_z()) - 1.0;  // NaN for x < 0
     o.bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
-    scene.objects.push_back(o);
+    scene.nodes.push_back(make_object_node(o, "bad"));
     try {
         render(scene, small());
         FAIL() << "expected a RenderError";
@@ -188,8 +187,9 @@ TEST(Renderer, SceneWithoutLightsGetsAHeadlight) {
 TEST(Renderer, ForwardDifferenceNormalsMatchAnalyticOnes) {
     Scene scene = blinn_scene();
     const RenderResult analytic = render(scene, small());
-    scene.objects[0].normals = NormalMode::ForwardDifference;
-    const RenderResult fd = render(scene, small());
+    RenderSettings fd_settings = small();
+    fd_settings.normals = NormalMode::ForwardDifference;
+    const RenderResult fd = render(scene, fd_settings);
     double worst = 0.0;
     for (std::size_t i = 0; i < analytic.image.pixels.size(); ++i)
         worst = std::max(worst, static_cast<double>(std::abs(analytic.image.pixels[i].x - fd.image.pixels[i].x)));

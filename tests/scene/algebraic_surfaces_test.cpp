@@ -186,7 +186,7 @@ TEST(AlgebraicSurfaces, WrongCallsAreLocatedErrorsThatShowTheSignature) {
               "call it as monomial(c = 1, i = 0, j = 0, k = 0, [point])");
     EXPECT_EQ(error_of("object { surface clebsch }"),
               "scene.zs:1:18: 'clebsch' is a function: call it as clebsch(...)");
-    EXPECT_EQ(error_of("let torus = 1"), "scene.zs:1:5: 'torus' is a built-in name; let cannot bind it");
+    EXPECT_EQ(error_of("let torus = 1"), "scene.zs:1:5: 'torus' is a built-in name; it cannot be bound");
     EXPECT_EQ(error_of("object { surface torus(1, 0.3 }"), "scene.zs:1:31: expected ',' or ')' but found '}'");
 }
 

@@ -45,7 +45,7 @@ TEST(Expression, BinaryOperatorsAreLeftAssociative) {
 
 TEST(Expression, IntegerExponentsBecomePowiAndOthersPow) {
     const Scene s = parse("object { surface x^3 + y^2.5 + z^-2 }");
-    const Expr f = s.objects[0].surface;
+    const Expr f = placed_objects(s).at(0).object().surface;
     EXPECT_EQ(f, powi(var_x(), 3) + pow(var_y(), Expr(2.5)) + powi(var_z(), -2));
     const Tape tape(f);
     Evaluator<double> eval(tape);
@@ -78,7 +78,7 @@ TEST(Expression, LetBindsNumbersAndExpressions) {
 TEST(Expression, LetSharesStructureInsteadOfCopyingIt) {
     // Hash-consing: f used twice is one node, so the tape evaluates it once.
     const Scene s = parse("let f = sqrt(x^2 + y^2)\nobject { surface f * f - 1 }");
-    const Expr surface = s.objects[0].surface;
+    const Expr surface = placed_objects(s).at(0).object().surface;
     EXPECT_EQ(surface.operand(0).operand(0), surface.operand(0).operand(1));
 }
 

@@ -26,8 +26,8 @@ TEST(Include, IncludedFileSharesNamesAndAddsItsStatements) {
     const auto main = dir.write("main.zs", "let r = 2\ninclude \"lib/shapes.zs\"\nobject { surface ball }\n");
     const Scene s = load_scene(main);
     ASSERT_EQ(s.lights.size(), 1U);
-    ASSERT_EQ(s.objects.size(), 1U);
-    const Tape tape(s.objects[0].surface);
+    ASSERT_EQ(placed_objects(s).size(), 1U);
+    const Tape tape(placed_objects(s).at(0).object().surface);
     Evaluator<double> eval(tape);
     EXPECT_DOUBLE_EQ(eval(1, 1, 1), 3.0 - 4.0);  // r from the includer, ball from the included file
 }
@@ -106,7 +106,7 @@ TEST(LoadScene, ErrorCarriesItsParts) {
 
 TEST(Model, ImportsTheBear) {
     const Scene s = parse_scene("object { surface model(\"" ZEROSET_MODELS_DIR "/bear.vm\") }", "scene.zs", ".");
-    const Expr bear = s.objects.at(0).surface;
+    const Expr bear = placed_objects(s).at(0).object().surface;
     EXPECT_GT(bear.node_count(), 100U);
     const Tape tape(bear);
     Evaluator<double> eval(tape);
@@ -120,7 +120,7 @@ TEST(Model, PathIsRelativeToTheSceneAndModelsComposeWithExpressions) {
                                 "s add x2 y2\nt add s z2\none const 1\nout sub t one\n");
     const auto main = dir.write("scenes/main.zs", "let m = model(\"../models/ball.vm\")\nobject { surface min(m, model(\"../models/ball.vm\") + 1) }\n");
     const Scene s = load_scene(main);
-    const Tape tape(s.objects.at(0).surface);
+    const Tape tape(placed_objects(s).at(0).object().surface);
     Evaluator<double> eval(tape);
     EXPECT_DOUBLE_EQ(eval(2, 0, 0), 3.0);
 }

@@ -41,13 +41,13 @@ TEST(SceneFiles, DefaultSceneIsTheBlinnBlobsFileWordForWord) {
 
 TEST(SceneFiles, DefaultSceneIsFigureOne) {
     const Scene s = default_scene();
-    ASSERT_EQ(s.objects.size(), 2U);  // the blobs and the floor that catches their shadow
-    EXPECT_EQ(s.objects[0].name, "blobs");
+    ASSERT_EQ(placed_objects(s).size(), 2U);  // the blobs and the floor that catches their shadow
+    EXPECT_EQ(placed_objects(s).at(0).name(), "blobs");
     EXPECT_EQ(s.image.width, 800);
     EXPECT_EQ(s.image.height, 600);
     EXPECT_FALSE(s.lights.empty());
     // h = 1 - e^-f - e^-g (eq. 12) at a few points, by hand.
-    const Tape tape(s.objects[0].surface);
+    const Tape tape(placed_objects(s).at(0).object().surface);
     Evaluator<double> h(tape);
     const auto expected = [](double x, double y, double z) {
         const double f = (x - 1.2) * (x - 1.2) + y * y + z * z - 1;
@@ -62,8 +62,8 @@ TEST(SceneFiles, BlinnBlobBoundsHoldTheWholeSurface) {
     // Interval arithmetic proves h > 0 everywhere in [-20, 20]³ outside the
     // bounds box; beyond that f, g > 300, so h > 0 plainly.
     const Scene s = default_scene();
-    const Box3 box = s.objects[0].bounds.enclosing_box();
-    const Tape tape(s.objects[0].surface);
+    const Box3 box = placed_objects(s).at(0).object().bounds.enclosing_box();
+    const Tape tape(placed_objects(s).at(0).object().surface);
     Evaluator<Interval> h(tape);
     const double r = 20.0;
     EXPECT_EQ(cells_not_proven_positive(h, box, {{-r, -r, -r}, {r, r, r}}, 10), 0);
@@ -76,7 +76,7 @@ TEST(SceneFiles, EveryShippedSceneParses) {
         ++count;
         try {
             const Scene s = load_scene(entry.path());
-            EXPECT_FALSE(s.objects.empty()) << entry.path();
+            EXPECT_FALSE(placed_objects(s).empty()) << entry.path();
         } catch (const SceneError& e) {
             ADD_FAILURE() << e.what();
         }

@@ -49,22 +49,24 @@ object { surface x - 1  bounds box((-1, -2, -3), (1, 2, 3)) }
     EXPECT_EQ(s.background, (Vec3d{0.1, 0.2, 0.3}));
     EXPECT_EQ(s.ambient, (Vec3d{0.5, 0.5, 0.5}));
 
-    ASSERT_EQ(s.objects.size(), 2U);
-    const Object& ball = s.objects[0];
-    EXPECT_EQ(ball.name, "ball");
+    const std::vector<PlacedObject> objects = placed_objects(s);
+    ASSERT_EQ(objects.size(), 2U);
+    const Object& ball = objects[0].object();
+    EXPECT_EQ(objects[0].name(), "ball");
     EXPECT_EQ(ball.bounds.kind, Bounds::Kind::Sphere);
     EXPECT_EQ(ball.bounds.center, (Vec3d{0, 0, 0}));
     EXPECT_EQ(ball.bounds.radius, 1.5);
     EXPECT_EQ(ball.method, Method::Sphere);
     EXPECT_EQ(ball.normals, NormalMode::ForwardDifference);
-    EXPECT_EQ(ball.material.color, (Vec3d{0.8, 0.3, 0.2}));
-    EXPECT_EQ(ball.material.ambient, 0.2);
-    EXPECT_EQ(ball.material.diffuse, 0.7);
-    EXPECT_EQ(ball.material.specular, 0.4);
-    EXPECT_EQ(ball.material.shininess, 25.0);
+    const Material& material = objects[0].material;
+    EXPECT_EQ(material.color, (Vec3d{0.8, 0.3, 0.2}));
+    EXPECT_EQ(material.ambient, 0.2);
+    EXPECT_EQ(material.diffuse, 0.7);
+    EXPECT_EQ(material.specular, 0.4);
+    EXPECT_EQ(material.shininess, 25.0);
 
-    const Object& plane = s.objects[1];
-    EXPECT_EQ(plane.name, "");
+    const Object& plane = objects[1].object();
+    EXPECT_EQ(objects[1].name(), "");
     EXPECT_EQ(plane.bounds.kind, Bounds::Kind::Box);
     EXPECT_EQ(plane.bounds.box.lo, (Vec3d{-1, -2, -3}));
     EXPECT_EQ(plane.bounds.box.hi, (Vec3d{1, 2, 3}));
@@ -79,12 +81,14 @@ TEST(SceneParser, AbsentKeysKeepTheStructDefaults) {
     EXPECT_EQ(s.background, defaults.background);
     EXPECT_EQ(s.lights[0].color, Light{}.color);
     EXPECT_TRUE(s.lights[0].casts_shadows);
-    const Object& o = s.objects[0];
+    const PlacedObject placed = placed_objects(s).at(0);
+    const Object& o = placed.object();
     const Object default_object;
     EXPECT_EQ(o.method, default_object.method);
     EXPECT_EQ(o.normals, default_object.normals);
-    EXPECT_EQ(o.material.color, default_object.material.color);
-    EXPECT_EQ(o.material.shininess, default_object.material.shininess);
+    EXPECT_FALSE(placed.node->material.has_value());
+    EXPECT_EQ(placed.material.color, Material{}.color);
+    EXPECT_EQ(placed.material.shininess, Material{}.shininess);
     // Bounds default to the box from (-10, -10, -10) to (10, 10, 10).
     EXPECT_EQ(o.bounds.kind, Bounds::Kind::Box);
     EXPECT_EQ(o.bounds.box.lo, (Vec3d{-10, -10, -10}));
@@ -101,20 +105,20 @@ TEST(SceneParser, KeysComeInAnyOrderAndLayout) {
 
 TEST(SceneParser, EmptySceneIsValid) {
     const Scene s = parse("# nothing but a comment\n");
-    EXPECT_TRUE(s.objects.empty());
+    EXPECT_TRUE(s.nodes.empty());
     EXPECT_TRUE(s.lights.empty());
 }
 
 TEST(SceneParser, StatementErrors) {
     EXPECT_EQ(error_of("camera { }\nfoo { }"),
-              "scene.zs:2:1: expected a statement (image, camera, light, background, ambient, let, include or object) "
-              "but found 'foo'");
+              "scene.zs:2:1: expected a statement (image, camera, light, background, ambient, let, include, "
+              "object, group, union, intersection, difference, instance, shape or for) but found 'foo'");
     EXPECT_EQ(error_of("f = x"),
-              "scene.zs:1:1: expected a statement (image, camera, light, background, ambient, let, include or object) "
-              "but found 'f'; to bind a name, write: let f = ...");
+              "scene.zs:1:1: expected a statement (image, camera, light, background, ambient, let, include, "
+              "object, group, union, intersection, difference, instance, shape or for) but found 'f'; to bind a name, write: let f = ...");
     EXPECT_EQ(error_of("camera { }\n(1, 2, 3)"),
-              "scene.zs:2:1: expected a statement (image, camera, light, background, ambient, let, include or object) "
-              "but found '('");
+              "scene.zs:2:1: expected a statement (image, camera, light, background, ambient, let, include, "
+              "object, group, union, intersection, difference, instance, shape or for) but found '('");
     EXPECT_EQ(error_of("camera fov 40"), "scene.zs:1:8: expected '{' but found 'fov'");
     EXPECT_EQ(error_of("camera { fov 40\n"),
               "scene.zs:2:1: expected '}' to close the camera block opened at line 1, column 1, but found end of file");
@@ -146,10 +150,10 @@ TEST(SceneParser, SingletonStatementsAppearOnce) {
 
 TEST(SceneParser, LetErrors) {
     EXPECT_EQ(error_of("let f = x\nlet f = y"), "scene.zs:2:5: 'f' is already bound (at scene.zs:1:5); a name can be bound only once");
-    EXPECT_EQ(error_of("let x = 1"), "scene.zs:1:5: 'x' is a built-in name; let cannot bind it");
-    EXPECT_EQ(error_of("let pi = 3"), "scene.zs:1:5: 'pi' is a built-in name; let cannot bind it");
-    EXPECT_EQ(error_of("let sqrt = 3"), "scene.zs:1:5: 'sqrt' is a built-in name; let cannot bind it");
-    EXPECT_EQ(error_of("let model = 3"), "scene.zs:1:5: 'model' is a built-in name; let cannot bind it");
+    EXPECT_EQ(error_of("let x = 1"), "scene.zs:1:5: 'x' is a built-in name; it cannot be bound");
+    EXPECT_EQ(error_of("let pi = 3"), "scene.zs:1:5: 'pi' is a built-in name; it cannot be bound");
+    EXPECT_EQ(error_of("let sqrt = 3"), "scene.zs:1:5: 'sqrt' is a built-in name; it cannot be bound");
+    EXPECT_EQ(error_of("let model = 3"), "scene.zs:1:5: 'model' is a built-in name; it cannot be bound");
     EXPECT_EQ(error_of("let 3 = x"), "scene.zs:1:5: expected a name but found '3'");
     EXPECT_EQ(error_of("let f x"), "scene.zs:1:7: expected '=' but found 'x'");
 }
@@ -161,7 +165,7 @@ TEST(SceneParser, KeywordsAndKeysCanBeBoundAsNames) {
         "camera { fov camera + 5 }\n"
         "object { surface x  material { color color } }");
     EXPECT_EQ(s.camera.fov_degrees, 35.0);
-    EXPECT_EQ(s.objects.at(0).material.color, (Vec3d{1, 0, 0}));
+    EXPECT_EQ(placed_objects(s).at(0).material.color, (Vec3d{1, 0, 0}));
 }
 
 TEST(SceneParser, ConstantSettings) {

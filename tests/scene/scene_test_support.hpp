@@ -30,7 +30,7 @@ inline std::string error_of(const std::string& text, const std::filesystem::path
 /// f(x, y, z) of the surface `expression`, with `lets` (let statements) before it.
 inline double evaluate(const std::string& expression, double x, double y, double z, const std::string& lets = "") {
     const Scene scene = parse(lets + "\nobject { surface " + expression + " }\n");
-    const Tape tape(scene.objects.at(0).surface);
+    const Tape tape(placed_objects(scene).at(0).object().surface);
     Evaluator<double> eval(tape);
     return eval(x, y, z);
 }

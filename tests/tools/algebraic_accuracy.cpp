@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     std::printf("|---|---|---|---|---|---|---|---|\n");
     for (const auto& file : scenes) {
         const Scene scene = load_scene(file);
-        const Object& object = scene.objects.at(0);
+        const Object& object = placed_objects(scene).at(0).object();
         const auto rays = test::algebraic_rays(object, count, 2024);
         for (const PolynomialSolver solver : all_polynomial_solvers()) {
             const test::SolverAccuracy a = test::measure_solver(object, rays, solver);

@@ -25,7 +25,7 @@ TEST(PolynomialAccuracy, GuaranteedSolversMissNothingOnAnyNamedSurface) {
     ASSERT_EQ(scenes.size(), 17u);
     for (const auto& file : scenes) {
         const Scene scene = load_scene(file);
-        const Object& object = scene.objects.at(0);
+        const Object& object = placed_objects(scene).at(0).object();
         const auto rays = algebraic_rays(object, 150, 77);
         for (const PolynomialSolver solver : {PolynomialSolver::Sturm, PolynomialSolver::Descartes, PolynomialSolver::Fast}) {
             SCOPED_TRACE(file.stem().string() + " / " + std::string(polynomial_solver_name(solver)));

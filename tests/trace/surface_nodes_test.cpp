@@ -17,7 +17,7 @@ namespace zeroset::test {
 namespace {
 
 Object algebraic_object(const std::string& name) {
-    return load_scene(ZEROSET_SOURCE_DIR "/scenes/algebraic/" + name + ".zs").objects.at(0);
+    return placed_objects(load_scene(ZEROSET_SOURCE_DIR "/scenes/algebraic/" + name + ".zs")).at(0).object();
 }
 
 /// The nodes of the scene's object, each checked to be a singular point to
@@ -28,8 +28,8 @@ std::vector<Vec3d> checked_nodes(const Object& object, double tolerance, int max
     Evaluator<Dual<double>> gradient(tape);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         const Dual<double> d = evaluate_gradient(gradient, nodes[i]);
-        EXPECT_LE(std::abs(d.v), tolerance) << object.name << " node " << i;
-        EXPECT_LE(length(d.g), tolerance) << object.name << " node " << i;
+        EXPECT_LE(std::abs(d.v), tolerance) << " node " << i;
+        EXPECT_LE(length(d.g), tolerance) << " node " << i;
         EXPECT_TRUE(object.bounds.enclosing_box().contains(nodes[i]));
         for (std::size_t j = 0; j < i; ++j) EXPECT_GT(length(nodes[i] - nodes[j]), 1e-3) << i << ", " << j;
     }

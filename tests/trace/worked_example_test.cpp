@@ -23,11 +23,11 @@ struct Subject {
 
     explicit Subject(const char* scene_file)
         : scene(load_scene(std::string(ZEROSET_SOURCE_DIR) + "/scenes/hart1993/" + scene_file)),
-          tape(scene.objects.at(0).surface, SlotLayout::OnePerValue),
-          span(*scene.objects.at(0).bounds.clip(survey_ray, 0.0, 1e9)) {}
+          tape(placed_objects(scene).at(0).object().surface, SlotLayout::OnePerValue),
+          span(*placed_objects(scene).at(0).object().bounds.clip(survey_ray, 0.0, 1e9)) {}
 
     [[nodiscard]] RootFinderSettings settings() const {
-        return settings_for_scale(scene.objects.at(0).bounds.enclosing_box().diagonal());
+        return settings_for_scale(placed_objects(scene).at(0).object().bounds.enclosing_box().diagonal());
     }
 
     std::vector<double> all_hits(Method method) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace zeroset {
@@ -102,6 +103,35 @@ Vec3d Mat4::transform_vector(const Vec3d& v) const {
     return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
             m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
             m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+}
+
+
+Vec3d Mat4::transpose_transform_vector(const Vec3d& v) const {
+    return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
+            m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
+}
+
+Box3 Mat4::transform_box(const Box3& box) const {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const auto finite = [](const Vec3d& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+    if (!finite(box.lo) || !finite(box.hi)) return {{-inf, -inf, -inf}, {inf, inf, inf}};
+    Vec3d lo{inf, inf, inf}, hi{-inf, -inf, -inf};
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3d p{(corner & 1) ? box.hi.x : box.lo.x, (corner & 2) ? box.hi.y : box.lo.y,
+                      (corner & 4) ? box.hi.z : box.lo.z};
+        const Vec3d q = transform_point(p);
+        lo = min(lo, q);
+        hi = max(hi, q);
+    }
+    // The corners' images are rounded: widen by a few units of their size.
+    const Vec3d pad = (max(abs_components(lo), abs_components(hi)) + Vec3d{1e-300, 1e-300, 1e-300}) * 1e-14;
+    return {lo - pad, hi + pad};
+}
+
+double Mat4::max_stretch() const {
+    double most = 0.0;
+    for (int j = 0; j < 3; ++j) most = std::max(most, std::hypot(m[0][j], m[1][j], m[2][j]));
+    return most;
 }
 
 }  // namespace zeroset

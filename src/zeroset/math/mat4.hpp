@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 
+#include "zeroset/math/box3.hpp"
 #include "zeroset/math/vec3.hpp"
 
 namespace zeroset {
@@ -27,6 +28,19 @@ struct Mat4 {
     [[nodiscard]] Vec3d transform_point(const Vec3d& p) const;
     /// Applies the matrix to (v, 0).
     [[nodiscard]] Vec3d transform_vector(const Vec3d& v) const;
+    /// Applies the transpose of the linear part to v: for the map from a
+    /// parent's space into a child's, this takes a child's gradient (normal)
+    /// to the parent's (survey §8: normals by the inverse transpose).
+    [[nodiscard]] Vec3d transpose_transform_vector(const Vec3d& v) const;
+    /// The smallest box containing the image of `box` (its eight corners'
+    /// images, rounded outward); an unbounded box stays unbounded.
+    [[nodiscard]] Box3 transform_box(const Box3& box) const;
+    /// The largest length of a column of the linear part: how much the map
+    /// may stretch a length, to within a factor of √3.
+    [[nodiscard]] double max_stretch() const;
+    [[nodiscard]] bool is_identity() const { return *this == identity(); }
+
+    friend bool operator==(const Mat4&, const Mat4&) = default;
 };
 
 }  // namespace zeroset

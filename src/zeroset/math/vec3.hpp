@@ -45,6 +45,12 @@ template <class T> constexpr Vec3<T> max(const Vec3<T>& a, const Vec3<T>& b) {
     return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z};
 }
 
+/// Component-wise |a| (for plain numbers).
+template <class T> Vec3<T> abs_components(const Vec3<T>& a) {
+    using std::abs;
+    return {abs(a.x), abs(a.y), abs(a.z)};
+}
+
 using Vec3d = Vec3<double>;
 using Vec3f = Vec3<float>;
 

@@ -19,6 +19,8 @@ struct RenderSettings {
     std::optional<Method> method;
     /// When given, the `polynomial` method's solver for every object.
     std::optional<PolynomialSolver> solver;
+    /// When given, how every object's normals are computed.
+    std::optional<NormalMode> normals;
     /// Called after every finished tile with (tiles done, tiles in all), from
     /// one thread at a time.
     std::function<void(int, int)> on_progress;

@@ -38,7 +38,7 @@ std::vector<Tile> make_tiles(int width, int height) {
 struct ThreadTotals {
     RenderStats stats;
     ShadingCounters shading;
-    std::optional<std::pair<int, Vec3d>> first_nan;
+    std::optional<TraceScratch::NanRecord> first_nan;
 };
 
 void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera, int spp, SceneTracer& tracer,
@@ -51,9 +51,9 @@ void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera,
                 const SubPixel sub = pixel_sample(px, py, s, spp);
                 const Ray ray = camera.ray(px, py, sub.x, sub.y);
                 ++totals.stats.camera_rays;
-                if (const auto hit = tracer.closest_hit(ray, far, totals.stats.counters)) {
+                if (const auto hit = tracer.closest_hit(ray, far)) {
                     ++totals.stats.hits;
-                    sum += shade(scene, tracer, ray, *hit, totals.stats.counters, totals.shading);
+                    sum += shade(tracer, ray, *hit, totals.shading);
                 } else {
                     sum += scene.background;
                 }
@@ -92,7 +92,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     check_camera(scene.camera);
     const auto start = std::chrono::steady_clock::now();
 
-    const PreparedScene prepared(scene, settings.method, settings.solver);
+    const PreparedScene prepared(scene, {settings.method, settings.solver, settings.normals});
     const CameraRays camera(scene.camera, settings.width, settings.height);
     const std::vector<Tile> tiles = make_tiles(settings.width, settings.height);
     const int thread_count = settings.threads > 0
@@ -115,6 +115,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
             }
         }
         mine.first_nan = tracer.first_nan();
+        mine.stats.counters += tracer.counters();
     };
     {
         std::vector<std::jthread> pool;
@@ -128,19 +129,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
         stats.hits += t.stats.hits;
         stats.shadow_rays += t.shading.shadow_rays;
         stats.counters += t.stats.counters;
-        if (t.first_nan && stats.counters.nan_evaluations > 0) {
-            const auto& [object, p] = *t.first_nan;
-            const std::string& name = scene.objects[static_cast<std::size_t>(object)].name;
-            std::ostringstream message;
-            message.precision(6);
-            message << "the surface of object ";
-            if (name.empty()) message << '#' << object + 1;
-            else message << '\'' << name << '\'';
-            message << " evaluates to NaN at (" << p.x << ", " << p.y << ", " << p.z
-                    << ") — a function outside its domain there (sqrt or log of a negative number, 0/0, …); "
-                       "fix the expression or tighten the bounds";
-            throw RenderError(message.str());
-        }
+        if (t.first_nan) throw RenderError(nan_message(*t.first_nan));
     }
     stats.width = settings.width;
     stats.height = settings.height;

@@ -11,18 +11,15 @@ namespace {
 
 /// Shadow rays start a little off the surface along the normal, far enough
 /// that the surface just hit is not found again (its hit tolerance is
-/// relative to the object's size, see SceneTracer).
-double shadow_offset(const PreparedScene& prepared, const SurfaceHit& hit) {
-    return 1e-4 * prepared.objects()[static_cast<std::size_t>(hit.object)].box.diagonal();
-}
+/// relative to the object's size, see trace/root_finder.hpp).
+double shadow_offset(const SurfaceHit& hit) { return 1e-4 * hit.scale; }
 
 }  // namespace
 
-Vec3d shade(const Scene& scene, SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit,
-            TraceCounters& counters, ShadingCounters& shading) {
-    const Material& m = scene.objects[static_cast<std::size_t>(hit.object)].material;
-    Vec3d color = hadamard(scene.ambient, m.color) * m.ambient;
-    const Vec3d origin = hit.point + hit.normal * shadow_offset(tracer.prepared(), hit);
+Vec3d shade(SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit, ShadingCounters& shading) {
+    const Material& m = tracer.prepared().material(hit.material);
+    Vec3d color = hadamard(tracer.prepared().scene().ambient, m.color) * m.ambient;
+    const Vec3d origin = hit.point + hit.normal * shadow_offset(hit);
     for (const Light& light : tracer.prepared().lights()) {
         Vec3d to_light;
         double distance = std::numeric_limits<double>::infinity();
@@ -37,7 +34,7 @@ Vec3d shade(const Scene& scene, SceneTracer& tracer, const Ray& ray, const Surfa
         if (lambert <= 0.0) continue;
         if (light.casts_shadows) {
             ++shading.shadow_rays;
-            if (tracer.occluded({origin, to_light}, distance, counters)) continue;
+            if (tracer.occluded({origin, to_light}, distance)) continue;
         }
         const Vec3d half = normalize(to_light - ray.dir);
         const double specular = std::pow(std::max(0.0, dot(hit.normal, half)), m.shininess);

@@ -12,7 +12,6 @@ struct ShadingCounters {
 };
 
 /// Linear RGB leaving the hit point towards the ray's origin.
-Vec3d shade(const Scene& scene, SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit,
-            TraceCounters& counters, ShadingCounters& shading);
+Vec3d shade(SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit, ShadingCounters& shading);
 
 }  // namespace zeroset

@@ -3,11 +3,13 @@
 // directly in C++; consumed by the renderer.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "zeroset/expr/expr.hpp"
+#include "zeroset/math/mat4.hpp"
 #include "zeroset/math/vec3.hpp"
 #include "zeroset/trace/bounds.hpp"
 #include "zeroset/trace/method.hpp"
@@ -49,15 +51,35 @@ inline Bounds default_object_bounds() {
     return b;
 }
 
+/// An implicit surface within its bounds, and how to trace it: a leaf of the
+/// scene's tree.
 struct Object {
-    std::string name;
     Expr surface;  // f(x, y, z): negative inside, zero on the surface
     Bounds bounds = default_object_bounds();
     Method method = Method::Auto;
     PolynomialSolver solver = PolynomialSolver::Fast;  // for Method::Polynomial
     NormalMode normals = NormalMode::Analytic;
-    Material material;
 };
+
+struct SceneNode;
+using SceneNodePtr = std::shared_ptr<const SceneNode>;
+
+/// A node of the scene's tree: an object, or a group (CSG union), an
+/// intersection or a difference (the first child minus the others) of
+/// nodes. Nodes are shared: a shape placed many times is one node under
+/// several parents, each with its own transform and material (an instance).
+struct SceneNode {
+    enum class Kind { Object, Group, Intersection, Difference };
+    Kind kind = Kind::Object;
+    std::string name;                    // for messages, statistics and `zeroset ray --object`
+    Object object;                       // Kind::Object
+    std::vector<SceneNodePtr> children;  // the other kinds
+    Mat4 transform = Mat4::identity();   // from the node's own space to its parent's
+    std::optional<Material> material;    // for the parts below that give none
+};
+
+/// A node for an object.
+SceneNodePtr make_object_node(Object object, std::string name = {}, std::optional<Material> material = {});
 
 /// Image settings a scene may carry; the command line overrides them.
 struct ImageSettings {
@@ -72,7 +94,21 @@ struct Scene {
     Vec3d background{0.05, 0.05, 0.08};  // linear RGB
     Vec3d ambient{1.0, 1.0, 1.0};        // ambient light colour (scaled by Material::ambient)
     ImageSettings image;
-    std::vector<Object> objects;
+    std::vector<SceneNodePtr> nodes;  // the top level
 };
+
+/// One placement of an object in the scene: its node, the map from its
+/// space to the scene's, and the material it is shaded with.
+struct PlacedObject {
+    const SceneNode* node;
+    Mat4 to_scene;
+    Material material;
+
+    [[nodiscard]] const Object& object() const { return node->object; }
+    [[nodiscard]] const std::string& name() const { return node->name; }
+};
+
+/// Every placement of every object, depth first in the order written.
+std::vector<PlacedObject> placed_objects(const Scene& scene);
 
 }  // namespace zeroset

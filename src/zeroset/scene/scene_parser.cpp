@@ -15,12 +15,12 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 8> statement_names{"image",   "camera", "light",   "background",
-                                                          "ambient", "let",    "include", "object"};
+constexpr std::array<std::string_view, 15> statement_names{
+    "image", "camera", "light",        "background", "ambient",  "let",   "include", "object",
+    "group", "union",  "intersection", "difference", "instance", "shape", "for"};
 constexpr std::array<std::string_view, 3> image_keys{"width", "height", "spp"};
 constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};
 constexpr std::array<std::string_view, 4> light_keys{"from", "direction", "color", "shadows"};
-constexpr std::array<std::string_view, 6> object_keys{"surface", "bounds", "method", "solver", "normals", "material"};
 constexpr std::array<std::string_view, 5> material_keys{"color", "ambient", "diffuse", "specular", "shininess"};
 
 constexpr int max_image_size = 65536;
@@ -43,9 +43,12 @@ std::vector<std::string_view> method_names() {
 
 }  // namespace
 
+SceneParser::SceneParser() = default;
+SceneParser::~SceneParser() = default;
+
 void SceneParser::parse(std::string file_name, std::string text, const std::filesystem::path& base_dir,
                         const std::filesystem::path& source) {
-    TokenStream in(std::move(file_name), std::move(text));
+    TokenStream& in = *streams_.emplace_back(std::make_unique<TokenStream>(std::move(file_name), std::move(text)));
     if (!source.empty()) {
         open_files_.push_back({source, in.file_name()});
         included_.insert(source);
@@ -61,6 +64,20 @@ void SceneParser::parse(std::string file_name, std::string text, const std::file
 
 void SceneParser::statement() {
     const Token& keyword = in_->peek();
+    if (keyword.kind == TokenKind::Name && keyword.text == "for") {
+        in_->next();
+        loop(keyword, [this] {
+            while (!in_->accept(TokenKind::RightBrace)) {
+                if (in_->at(TokenKind::End)) in_->fail_expected("'}' to close the for loop");
+                statement();
+            }
+        });
+        return;
+    }
+    if (at_node_statement()) {
+        node_statement([this](SceneNodePtr node) { scene_.nodes.push_back(std::move(node)); });
+        return;
+    }
     if (keyword.kind != TokenKind::Name || !contains(statement_names, keyword.text)) {
         std::string message = "expected a statement (" + join_words(statement_names, "or") + ") but found " +
                               describe(keyword);
@@ -87,7 +104,7 @@ void SceneParser::statement() {
     } else if (name == "include") {
         include(keyword);
     } else {
-        object(keyword);
+        shape();
     }
 }
 
@@ -159,13 +176,17 @@ void SceneParser::light(const Token& keyword) {
 
 void SceneParser::let() {
     const Token& name = in_->expect(TokenKind::Name);
+    check_unbound(name);
+    in_->expect(TokenKind::Equals);
+    scope_.define(std::string(name.text), {value().value, format_location(in_->file_name(), name.where)});
+}
+
+void SceneParser::check_unbound(const Token& name) const {
     const std::string text(name.text);
-    if (is_builtin_name(text)) in_->fail(name.where, "'" + text + "' is a built-in name; let cannot bind it");
+    if (is_builtin_name(text)) in_->fail(name.where, "'" + text + "' is a built-in name; it cannot be bound");
     if (const Binding* earlier = scope_.find(text))
         in_->fail(name.where, "'" + text + "' is already bound (at " + earlier->defined_at +
                                   "); a name can be bound only once");
-    in_->expect(TokenKind::Equals);
-    scope_.define(text, {value().value, format_location(in_->file_name(), name.where)});
 }
 
 void SceneParser::include(const Token& keyword) {
@@ -186,36 +207,6 @@ void SceneParser::include(const Token& keyword) {
         in_->fail(keyword.where, "cannot open included file '" + path.string() + "': " + e.what());
     }
     parse(path.string(), std::move(text), path.parent_path(), canonical);
-}
-
-void SceneParser::object(const Token& keyword) {
-    Object object;
-    if (in_->at(TokenKind::String)) object.name = in_->next().text;
-    bool has_surface = false;
-    block(keyword, object_keys, [&](const Token& key) {
-        if (key.text == "surface") {
-            const auto [surface, where] = value();
-            if (surface.is_vector())
-                in_->fail(where, "the surface must be a number (an expression in x, y, z), but found a vector");
-            if (surface.number().is_constant_valued())
-                in_->fail(where, "the surface must depend on x, y or z, but it is the constant " +
-                                     format_number(surface.number().value()));
-            object.surface = surface.number();
-            has_surface = true;
-        } else if (key.text == "bounds") {
-            object.bounds = bounds();
-        } else if (key.text == "method") {
-            object.method = method();
-        } else if (key.text == "solver") {
-            object.solver = polynomial_solver();
-        } else if (key.text == "normals") {
-            object.normals = normal_mode();
-        } else {
-            object.material = material(key);
-        }
-    });
-    if (!has_surface) in_->fail(keyword.where, "an object needs a surface");
-    scene_.objects.push_back(std::move(object));
 }
 
 Material SceneParser::material(const Token& keyword) {

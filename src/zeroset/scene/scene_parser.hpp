@@ -1,11 +1,16 @@
 // SceneParser: the statement half of the scene language — image, camera,
-// light, background, ambient, let, include and object — filling a Scene as
-// it reads. One parser reads a whole scene, following includes; expressions
-// are read by expression_parser.hpp.
+// light, background, ambient, let, include, the objects and the structure
+// above them (groups, CSG, transforms, shapes and their instances, loops) —
+// filling a Scene as it reads. One parser reads a whole scene, following
+// includes; expressions are read by expression_parser.hpp. The statements
+// are split over scene_parser.cpp (settings and files), scene_nodes.cpp
+// (objects and the tree) and transforms.cpp (affine maps).
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <span>
@@ -21,8 +26,25 @@
 
 namespace zeroset {
 
+/// `shape NAME(PARAMETERS) { … }`: a body to read once per distinct list of
+/// arguments, each reading placed by `instance` as often as wanted.
+struct ShapeDefinition {
+    std::string name;
+    std::vector<std::string> parameters;
+    TokenStream* stream;  // the file it is written in …
+    std::size_t body;     // … at its '{'
+    std::size_t visible;  // the Scope mark where it is defined
+    std::filesystem::path dir;  // the directory of its file (paths in it start there)
+    std::map<std::vector<const void*>, SceneNodePtr> read;  // by the arguments' expression nodes
+};
+
 class SceneParser {
 public:
+    SceneParser();
+    ~SceneParser();
+    SceneParser(const SceneParser&) = delete;
+    SceneParser& operator=(const SceneParser&) = delete;
+
     /// Parses scene text into scene(); throws SceneError. `base_dir` is where
     /// the text's relative paths start; `source`, the canonical path of the
     /// file the text came from (if it did), lets includes of it be caught.
@@ -37,14 +59,16 @@ private:
         T value;
         SourceLocation where;
     };
+    /// Where a block's nodes go: the scene's top level or a parent's children.
+    using NodeSink = std::function<void(SceneNodePtr)>;
 
+    // scene_parser.cpp: settings, let, include, and the readers of values.
     void statement();
     void image(const Token& keyword);
     void camera(const Token& keyword);
     void light(const Token& keyword);
     void let();
     void include(const Token& keyword);
-    void object(const Token& keyword);
     Material material(const Token& keyword);
     Bounds bounds();
     /// A name from `names` (the error lists them); `what` names the choice in messages.
@@ -52,14 +76,14 @@ private:
     Method method();
     PolynomialSolver polynomial_solver();
     NormalMode normal_mode();
-
     /// Reads `{ key value … }`: keys from `keys`, each at most once, in any
     /// order; `on_key` reads the value of the key just consumed.
     void block(const Token& keyword, std::span<const std::string_view> keys,
                const std::function<void(const Token& key)>& on_key);
     /// Records the first `keyword` statement of its kind; fails on a second.
     void once(std::optional<std::string>& first, const Token& keyword, std::string_view what);
-
+    /// Fails unless `name` may be bound here (not built in, not bound yet).
+    void check_unbound(const Token& name) const;
     Located<Value> value();
     Located<double> number(std::string_view what);
     Located<Vec3d> vector(std::string_view what);
@@ -67,6 +91,32 @@ private:
     Vec3d color(std::string_view what);
     int count(std::string_view what, int max);
     bool on_off(std::string_view what);
+
+    // scene_nodes.cpp: the tree.
+    /// True when the current token starts a node statement (object, group,
+    /// union, intersection, difference, instance) or a loop of them.
+    [[nodiscard]] bool at_node_statement() const;
+    /// Reads one node statement (or a loop of them) into `sink`.
+    void node_statement(const NodeSink& sink);
+    SceneNodePtr object(const Token& keyword);
+    SceneNodePtr composite(const Token& keyword, SceneNode::Kind kind);
+    SceneNodePtr instance(const Token& keyword);
+    void shape();
+    /// Skips a `{ … }` unread (up to its matching '}').
+    void skip_block(std::string_view what);
+    /// Reads a child node, a loop of them or a let into `node`; false when
+    /// the current token starts none of these.
+    bool child_entry(SceneNode& node);
+    /// `for NAME from A to B [step S] { … }`; each iteration reads the body
+    /// with `body`, in a frame binding NAME.
+    void loop(const Token& keyword, const std::function<void()>& body);
+    /// Reads a block's entries up to its '}': child nodes, loops and lets
+    /// into `node`'s children, its transforms and material into `node`.
+    void node_body(const Token& keyword, SceneNode& node);
+    /// Reads one `translate …`, `rotate …`, … after its keyword (transforms.cpp).
+    Mat4 transform(const Token& keyword);
+    /// Counts one level of nested blocks while it lives; fails past the limit.
+    class Nesting;
 
     Scene scene_;
     Scope scope_;
@@ -77,9 +127,12 @@ private:
     };
     std::vector<OpenFile> open_files_;          // the chain of includes being read
     std::set<std::filesystem::path> included_;  // every file read so far, canonical
+    std::vector<std::unique_ptr<TokenStream>> streams_;  // every file read, kept for the bodies written in them
     std::optional<std::string> image_at_, camera_at_, background_at_, ambient_at_;
     TokenStream* in_ = nullptr;  // the file being read
     std::filesystem::path dir_;  // its directory
+    int depth_ = 0;              // nested blocks and bodies being read
+    long long iterations_ = 0;   // loop iterations read so far
 };
 
 }  // namespace zeroset

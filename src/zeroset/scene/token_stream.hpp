@@ -32,6 +32,11 @@ public:
     /// Consumes a token of the given kind, or fails with "expected ')' but found 'x'".
     const Token& expect(TokenKind kind);
 
+    /// Where the cursor is, to come back to with seek() — how the bodies of
+    /// loops and shapes are read again.
+    [[nodiscard]] std::size_t position() const { return pos_; }
+    void seek(std::size_t position) { pos_ = position; }
+
     /// Throws SceneError at `where` in this file.
     [[noreturn]] void fail(SourceLocation where, const std::string& message) const;
     /// Throws "expected <what> but found <the current token>" at the current token.

@@ -10,6 +10,7 @@ constexpr std::array methods{Method::Auto,       Method::Sphere, Method::Interva
                              Method::Polynomial, Method::Newton, Method::RegulaFalsi, Method::Bisection};
 constexpr std::array solvers{PolynomialSolver::Closed, PolynomialSolver::Sturm, PolynomialSolver::Descartes,
                              PolynomialSolver::Laguerre, PolynomialSolver::Fast};
+constexpr std::array normal_modes{NormalMode::Analytic, NormalMode::ForwardDifference, NormalMode::CentralDifference};
 }  // namespace
 
 std::span<const Method> all_methods() { return methods; }
@@ -57,12 +58,23 @@ std::string_view method_name(Method m) {
     return "?";
 }
 
+std::span<const NormalMode> all_normal_modes() { return normal_modes; }
+
 std::optional<NormalMode> normal_mode_from_name(std::string_view name) {
-    if (name == "analytic") return NormalMode::Analytic;
-    if (name == "fd" || name == "forward-difference") return NormalMode::ForwardDifference;
+    for (const NormalMode m : normal_modes)
+        if (normal_mode_name(m) == name) return m;
+    if (name == "forward-difference") return NormalMode::ForwardDifference;
+    if (name == "central-difference") return NormalMode::CentralDifference;
     return std::nullopt;
 }
 
-std::string_view normal_mode_name(NormalMode m) { return m == NormalMode::Analytic ? "analytic" : "fd"; }
+std::string_view normal_mode_name(NormalMode m) {
+    switch (m) {
+        case NormalMode::Analytic: return "analytic";
+        case NormalMode::ForwardDifference: return "fd";
+        case NormalMode::CentralDifference: return "central";
+    }
+    return "?";
+}
 
 }  // namespace zeroset

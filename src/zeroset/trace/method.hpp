@@ -23,9 +23,11 @@ std::span<const PolynomialSolver> all_polynomial_solvers();
 std::optional<PolynomialSolver> polynomial_solver_from_name(std::string_view name);
 std::string_view polynomial_solver_name(PolynomialSolver s);
 
-/// How surface normals are computed: the exact gradient (eq. 33) or forward
-/// differences (eq. 34).
-enum class NormalMode { Analytic, ForwardDifference };
+/// How surface normals are computed: the exact gradient (eq. 33), forward
+/// differences (eq. 34) or central differences.
+enum class NormalMode { Analytic, ForwardDifference, CentralDifference };
+
+std::span<const NormalMode> all_normal_modes();
 
 std::optional<Method> method_from_name(std::string_view name);
 std::string_view method_name(Method m);

@@ -1,0 +1,159 @@
+// An implicit leaf's queries over its method, and its normals (§8).
+#include "zeroset/accel/implicit_leaf.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "zeroset/accel/trace_scratch.hpp"
+#include "zeroset/trace/choose_method.hpp"
+
+namespace zeroset {
+
+namespace {
+
+/// The outward normal of the bounds at a point on them.
+Vec3d bounds_normal(const Bounds& bounds, const Vec3d& p) {
+    if (bounds.kind == Bounds::Kind::Sphere) return (p - bounds.center) / bounds.radius;
+    // The face the point is nearest to, relative to the box's size.
+    const Box3& box = bounds.box;
+    int best_axis = 0;
+    double best = INFINITY, sign = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double size = std::max(box.hi[axis] - box.lo[axis], 1e-300);
+        const double to_lo = std::abs(p[axis] - box.lo[axis]) / size, to_hi = std::abs(box.hi[axis] - p[axis]) / size;
+        if (to_lo < best) best = to_lo, best_axis = axis, sign = -1.0;
+        if (to_hi < best) best = to_hi, best_axis = axis, sign = 1.0;
+    }
+    Vec3d n;
+    n[best_axis] = sign;
+    return n;
+}
+
+Vec3d unit_or_zero(const Vec3d& g) {
+    const double len = length(g);
+    if (!(len > 0.0) || !std::isfinite(len)) return {};
+    return g / len;
+}
+
+}  // namespace
+
+LeafScratch::LeafScratch(const ImplicitLeaf& leaf)
+    : h(leaf.tape()),
+      finder(make_root_finder(leaf.method(), leaf.tape(), leaf.settings())),
+      gradient(leaf.tape()),
+      value(leaf.tape()) {}
+
+ImplicitLeaf::ImplicitLeaf(std::size_t id, LeafDescription description)
+    : id_(id),
+      description_(std::move(description)),
+      tape_(description_.surface, SlotLayout::OnePerValue),
+      box_(description_.bounds.enclosing_box()),
+      method_(resolve_method(description_.method, tape_)),
+      settings_(settings_for_scale(box_.diagonal())) {
+    settings_.polynomial_solver = description_.solver;
+    (void)make_root_finder(method_, tape_, settings_);  // throws here, not in a render thread
+}
+
+LeafScratch& ImplicitLeaf::scratch_for(TraceScratch& scratch) const {
+    std::unique_ptr<LeafScratch>& slot = scratch.leaf(id_);
+    if (!slot) slot = std::make_unique<LeafScratch>(*this);
+    return *slot;
+}
+
+void ImplicitLeaf::note_nan(const LeafScratch& leaf, std::uint64_t nans_before, TraceScratch& scratch) const {
+    if (scratch.counters.nan_evaluations != nans_before && !scratch.first_nan)
+        scratch.first_nan = TraceScratch::NanRecord{this, leaf.h.last_nan_point()};
+}
+
+SurfaceRef ImplicitLeaf::surface_at(const Ray& ray, double t, BoundaryKind kind) const {
+    SurfaceRef s;
+    s.leaf = kind == BoundaryKind::Open ? nullptr : this;
+    s.kind = kind;
+    s.material = description_.material;
+    s.local_point = ray.at(t);
+    s.scale = box_.diagonal();
+    return s;
+}
+
+std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    const auto span = description_.bounds.clip(ray, t_min, t_max);
+    if (!span) return std::nullopt;
+    LeafScratch& leaf = scratch_for(scratch);
+    const std::uint64_t nans = scratch.counters.nan_evaluations;
+    leaf.h.set_ray(ray);
+    const HitResult hit = leaf.finder->first_hit(leaf.h, *span, scratch.counters);
+    note_nan(leaf, nans, scratch);
+    if (!hit.t) return std::nullopt;
+    // A hit at the span's start with the ray already inside: on the bounds'
+    // cut when the ray came in through them, else the ray starts inside.
+    BoundaryKind kind = BoundaryKind::Surface;
+    if (*hit.t == span->t0 && leaf.h.value(span->t0, scratch.counters) < 0.0)
+        kind = span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open;
+    return Hit{*hit.t, surface_at(ray, *hit.t, kind)};
+}
+
+void ImplicitLeaf::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {
+    const auto span = description_.bounds.clip(ray, t_min, t_max);
+    if (!span) return;
+    LeafScratch& leaf = scratch_for(scratch);
+    const std::uint64_t nans = scratch.counters.nan_evaluations;
+    leaf.h.set_ray(ray);
+    std::vector<double>& roots = leaf.roots;
+    roots.clear();
+    leaf.finder->all_hits(leaf.h, *span, roots, scratch.counters);
+    // The events: t0, the roots strictly inside the span, t1.
+    std::sort(roots.begin(), roots.end());
+    std::erase_if(roots, [&](double t) { return !(t > span->t0 && t < span->t1); });
+    roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+    const auto event = [&](std::size_t i) { return i == 0 ? span->t0 : (i <= roots.size() ? roots[i - 1] : span->t1); };
+    const std::size_t gaps = roots.size() + 1;
+    const auto boundary = [&](std::size_t i) {
+        if (i == 0) return span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open;
+        if (i == gaps) return span->t1 < t_max ? BoundaryKind::Bounds : BoundaryKind::Open;
+        return BoundaryKind::Surface;
+    };
+    std::optional<Hit> open;
+    bool previous_inside = true;  // so that t0 is never taken for a tangent root
+    for (std::size_t i = 0; i < gaps; ++i) {
+        const double mid = 0.5 * (event(i) + event(i + 1));
+        const bool inside = leaf.h.value(mid, scratch.counters) <= 0.0;
+        if (inside && !open) open = Hit{event(i), surface_at(ray, event(i), boundary(i))};
+        if (!inside && open) {
+            out.push_back({*open, {event(i), surface_at(ray, event(i), boundary(i))}});
+            open.reset();
+        } else if (!inside && !previous_inside) {  // a root between two outside gaps: a tangent touch
+            const Hit touch{event(i), surface_at(ray, event(i), BoundaryKind::Surface)};
+            out.push_back({touch, touch});
+        }
+        previous_inside = inside;
+    }
+    if (open) out.push_back({*open, {event(gaps), surface_at(ray, event(gaps), boundary(gaps))}});
+    note_nan(leaf, nans, scratch);
+}
+
+double ImplicitLeaf::normal_step() const {
+    // Where the normal study (docs/rendering.md#normals) puts the least error.
+    const double relative = description_.normals == NormalMode::CentralDifference ? 1e-5 : 1e-7;
+    return relative * box_.diagonal();
+}
+
+Vec3d ImplicitLeaf::local_normal(const SurfaceRef& surface, TraceScratch& scratch) const {
+    const Vec3d& p = surface.local_point;
+    if (surface.kind == BoundaryKind::Bounds) return bounds_normal(description_.bounds, p);
+    LeafScratch& leaf = scratch_for(scratch);
+    const double h = normal_step();
+    const auto f = [&](double x, double y, double z) { return leaf.value(x, y, z); };
+    switch (description_.normals) {
+        case NormalMode::Analytic: return unit_or_zero(evaluate_gradient(leaf.gradient, p).g);  // eq. 33
+        case NormalMode::ForwardDifference: {                                                    // eq. 34
+            const double f0 = f(p.x, p.y, p.z);
+            return unit_or_zero({f(p.x + h, p.y, p.z) - f0, f(p.x, p.y + h, p.z) - f0, f(p.x, p.y, p.z + h) - f0});
+        }
+        case NormalMode::CentralDifference:
+            return unit_or_zero({f(p.x + h, p.y, p.z) - f(p.x - h, p.y, p.z), f(p.x, p.y + h, p.z) - f(p.x, p.y - h, p.z),
+                                 f(p.x, p.y, p.z + h) - f(p.x, p.y, p.z - h)});
+    }
+    return {};
+}
+
+}  // namespace zeroset

@@ -1,0 +1,87 @@
+// ImplicitLeaf: one implicit surface f = 0 within its bounds — the survey's
+// object: a tape, a ray-intersection method chosen for it (trace/), and its
+// bounds (§6.1). Its solid is {f ≤ 0} ∩ bounds: where the bounds cut through
+// the solid, the cut is a face of the solid, with the bounds' normal.
+//
+// The first hit comes from the method's first_hit; the spans (for CSG) from
+// its all_hits, with the inside and outside told apart by the sign of f
+// between consecutive roots, so a tangent root neither opens nor closes a
+// span by itself (it becomes a span of length 0).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "zeroset/accel/primitive.hpp"
+#include "zeroset/expr/evaluator.hpp"
+#include "zeroset/trace/bounds.hpp"
+#include "zeroset/trace/root_finder.hpp"
+
+namespace zeroset {
+
+class TraceScratch;
+
+/// What an implicit leaf is made of.
+struct LeafDescription {
+    std::string name;  // for messages
+    Expr surface;
+    Bounds bounds;
+    Method method = Method::Auto;  // Auto is resolved by choose_method
+    PolynomialSolver solver = PolynomialSolver::Fast;
+    NormalMode normals = NormalMode::Analytic;
+    MaterialId material = no_material;
+};
+
+/// A thread's evaluators and root finder for one leaf.
+struct LeafScratch {
+    explicit LeafScratch(const ImplicitLeaf& leaf);
+
+    RayFunction h;
+    std::unique_ptr<RootFinder> finder;
+    Evaluator<Dual<double>> gradient;
+    Evaluator<double> value;
+    std::vector<double> roots;
+};
+
+class ImplicitLeaf final : public Primitive {
+public:
+    /// `id` numbers the leaf among all leaves of its tree (TraceScratch
+    /// slots). Throws std::invalid_argument when the method cannot trace the
+    /// surface (the polynomial method on a non-polynomial f).
+    ImplicitLeaf(std::size_t id, LeafDescription description);
+
+    [[nodiscard]] Box3 bounds() const override { return box_; }
+    std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
+    void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
+
+    /// The unit outward normal at a boundary point, in the leaf's own space:
+    /// ∇f (eq. 33) or its difference estimate (eq. 34), or the bounds'
+    /// normal on a cut; the zero vector where it is undefined.
+    Vec3d local_normal(const SurfaceRef& surface, TraceScratch& scratch) const;
+
+    [[nodiscard]] std::size_t id() const { return id_; }
+    [[nodiscard]] const std::string& name() const { return description_.name; }
+    [[nodiscard]] Method method() const { return method_; }
+    [[nodiscard]] const Tape& tape() const { return tape_; }
+    [[nodiscard]] const RootFinderSettings& settings() const { return settings_; }
+    [[nodiscard]] const LeafDescription& description() const { return description_; }
+    /// The step of the difference normals, a length in the leaf's space.
+    [[nodiscard]] double normal_step() const;
+
+private:
+    LeafScratch& scratch_for(TraceScratch& scratch) const;
+    /// Records a NaN the last query met (if it met one and it is the first).
+    void note_nan(const LeafScratch& leaf, std::uint64_t nans_before, TraceScratch& scratch) const;
+    [[nodiscard]] SurfaceRef surface_at(const Ray& ray, double t, BoundaryKind kind) const;
+
+    std::size_t id_;
+    LeafDescription description_;
+    Tape tape_;  // SlotLayout::OnePerValue, so it can be pruned
+    Box3 box_;   // the bounds' enclosing box
+    Method method_;
+    RootFinderSettings settings_;
+};
+
+}  // namespace zeroset

@@ -1,0 +1,46 @@
+// Rays in, hits out, through one affine map.
+#include "zeroset/accel/instance.hpp"
+
+#include <stdexcept>
+
+namespace zeroset {
+
+Instance::Instance(std::shared_ptr<const Primitive> child, const Mat4& to_parent, MaterialId material)
+    : child_(std::move(child)), to_parent_(to_parent), material_(material), stretch_(to_parent.max_stretch()) {
+    const std::optional<Mat4> inverse = to_parent.inverse();
+    if (!inverse) throw std::invalid_argument("a transform must be invertible (a scale of 0 flattens the object)");
+    to_child_ = *inverse;
+    box_ = to_parent_.transform_box(child_->bounds());
+}
+
+Ray Instance::to_child(const Ray& ray) const {
+    return {to_child_.transform_point(ray.origin), to_child_.transform_vector(ray.dir)};
+}
+
+void Instance::lift(Hit& hit) const {
+    SurfaceRef& s = hit.surface;
+    s.to_local = s.to_local * to_child_;
+    s.scale *= stretch_;
+    if (s.material == no_material) s.material = material_;
+}
+
+std::optional<Hit> Instance::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    std::optional<Hit> hit = child_->first_hit(to_child(ray), t_min, t_max, scratch);
+    if (hit) lift(*hit);
+    return hit;
+}
+
+bool Instance::occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    return child_->occluded(to_child(ray), t_min, t_max, scratch);
+}
+
+void Instance::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {
+    const std::size_t first = out.size();
+    child_->spans(to_child(ray), t_min, t_max, scratch, out);
+    for (std::size_t i = first; i < out.size(); ++i) {
+        lift(out[i].enter);
+        lift(out[i].exit);
+    }
+}
+
+}  // namespace zeroset

@@ -1,0 +1,44 @@
+// Instance: a shared child placed with its own affine transform and
+// material (survey §9, eq. 36) — what an object's `translate`, `rotate`, …
+// become, and how one prepared shape is placed many times without a copy of
+// its tape. The ray is moved into the child's space, x_o' = M⁻¹x_o and
+// x_d' = M⁻¹x_d, so t is the same on both sides; x_d' is generally not of
+// unit length, which every method accounts for (RayFunction::dir_length).
+// Normals come back through the inverse transpose (§8).
+#pragma once
+
+#include <memory>
+
+#include "zeroset/accel/primitive.hpp"
+
+namespace zeroset {
+
+class Instance final : public Primitive {
+public:
+    /// `to_parent` maps the child's space into the instance's; it must be
+    /// invertible (throws std::invalid_argument otherwise). `material` is
+    /// given to the parts of the child that have none.
+    Instance(std::shared_ptr<const Primitive> child, const Mat4& to_parent, MaterialId material);
+
+    [[nodiscard]] Box3 bounds() const override { return box_; }
+    std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
+    bool occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
+    void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
+
+    [[nodiscard]] const Primitive& child() const { return *child_; }
+    [[nodiscard]] const Mat4& to_parent() const { return to_parent_; }
+
+private:
+    [[nodiscard]] Ray to_child(const Ray& ray) const;
+    /// A hit in the child's terms, in the instance's.
+    void lift(Hit& hit) const;
+
+    std::shared_ptr<const Primitive> child_;
+    Mat4 to_parent_;
+    Mat4 to_child_;
+    MaterialId material_;
+    double stretch_;  // how much to_parent stretches lengths
+    Box3 box_;
+};
+
+}  // namespace zeroset

@@ -1,0 +1,52 @@
+// Primitive: everything the renderer traces answers the same questions
+// (DESIGN.md, "Primitives"): its bounds, the first hit along a ray, whether
+// a shadow ray is blocked, and the spans of the ray inside its solid. The
+// kinds are an implicit leaf (a tape and its method), an instance (a shared
+// child with its own transform and material), a group (children in a BVH;
+// also CSG union) and a CSG intersection or difference (Roth's span lists).
+//
+// Primitives are prepared once and shared, read-only, by every render
+// thread; what a query needs to write — evaluators, root finders, span
+// buffers, counters — lives in the thread's TraceScratch. A query costs one
+// virtual call per primitive it visits, never one per evaluation.
+#pragma once
+
+#include <optional>
+
+#include "zeroset/accel/surface_ref.hpp"
+#include "zeroset/math/box3.hpp"
+
+namespace zeroset {
+
+class TraceScratch;
+
+class Primitive {
+public:
+    virtual ~Primitive() = default;
+
+    /// A box containing the solid, in the primitive's own (parent's) space;
+    /// infinite where the solid is unbounded.
+    [[nodiscard]] virtual Box3 bounds() const = 0;
+
+    /// The smallest t in [t_min, t_max] where the ray is on or in the solid
+    /// (t_min itself when it starts inside).
+    virtual std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const = 0;
+
+    /// Whether any t in [t_min, t_max] is on or in the solid.
+    virtual bool occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+        return first_hit(ray, t_min, t_max, scratch).has_value();
+    }
+
+    /// Appends the parts of [t_min, t_max] inside the solid to `out`, in
+    /// increasing t: a span that starts at t_min because the ray starts
+    /// inside has an Open enter, one that runs on past t_max an Open exit.
+    virtual void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const = 0;
+};
+
+/// True when every coordinate of the box is finite.
+inline bool is_bounded(const Box3& box) {
+    return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.lo.z) && std::isfinite(box.hi.x) &&
+           std::isfinite(box.hi.y) && std::isfinite(box.hi.z);
+}
+
+}  // namespace zeroset

@@ -1,0 +1,62 @@
+// TraceScratch: what one render thread writes while it traces — per-leaf
+// evaluators and root finders (made on a leaf's first use, so a scene of
+// 100 000 objects costs only what a thread actually touches), reusable span
+// buffers for CSG, the evaluation counters, and the first NaN met. The
+// primitives themselves stay shared and read-only.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "zeroset/accel/surface_ref.hpp"
+#include "zeroset/trace/trace_counters.hpp"
+
+namespace zeroset {
+
+struct LeafScratch;
+
+class TraceScratch {
+public:
+    /// For a tree of `leaf_count` implicit leaves (ids 0 … leaf_count − 1).
+    explicit TraceScratch(std::size_t leaf_count);
+    ~TraceScratch();
+    TraceScratch(const TraceScratch&) = delete;
+    TraceScratch& operator=(const TraceScratch&) = delete;
+
+    TraceCounters counters;
+
+    /// Where a leaf's function first evaluated to NaN.
+    struct NanRecord {
+        const ImplicitLeaf* leaf;
+        Vec3d point;  // in the leaf's own space
+    };
+    std::optional<NanRecord> first_nan;
+
+    /// The scratch slot of leaf `id` (empty until the leaf fills it).
+    std::unique_ptr<LeafScratch>& leaf(std::size_t id) { return leaves_.at(id); }
+
+    /// A cleared span list for the caller's use until the lease ends; leases
+    /// end in the reverse order of their start (queries nest).
+    class SpanLease {
+    public:
+        explicit SpanLease(TraceScratch& scratch);
+        ~SpanLease() { --scratch_.spans_in_use_; }
+        SpanLease(const SpanLease&) = delete;
+        SpanLease& operator=(const SpanLease&) = delete;
+        SpanList& operator*() const { return *list_; }
+        SpanList* operator->() const { return list_; }
+
+    private:
+        TraceScratch& scratch_;
+        SpanList* list_;
+    };
+
+private:
+    std::vector<std::unique_ptr<LeafScratch>> leaves_;
+    std::vector<std::unique_ptr<SpanList>> span_pool_;
+    std::size_t spans_in_use_ = 0;
+};
+
+}  // namespace zeroset

@@ -1,0 +1,88 @@
+// From the scene's tree to primitives: objects become implicit leaves,
+// groups BVHs, intersections and differences CSG nodes, and a transform or
+// a material on a node an instance around its primitive.
+#include "zeroset/render/prepared_scene.hpp"
+
+#include <stdexcept>
+
+#include "zeroset/accel/csg.hpp"
+#include "zeroset/accel/group.hpp"
+#include "zeroset/accel/instance.hpp"
+#include "zeroset/render/render_settings.hpp"
+
+namespace zeroset {
+
+PreparedScene::PreparedScene(const Scene& scene, const ObjectOverrides& overrides)
+    : scene_(&scene), overrides_(overrides), lights_(scene.lights) {
+    if (lights_.empty()) lights_.push_back({Light::Kind::Point, scene.camera.from, {}, {1.0, 1.0, 1.0}, true});
+    std::vector<std::shared_ptr<const Primitive>> top;
+    top.reserve(scene.nodes.size());
+    for (const SceneNodePtr& node : scene.nodes) top.push_back(prepare(node));
+    root_ = std::make_shared<Group>(std::move(top));
+    prepared_.clear();
+}
+
+const Material& PreparedScene::material(MaterialId id) const {
+    return id == no_material ? default_material_ : materials_.at(static_cast<std::size_t>(id));
+}
+
+MaterialId PreparedScene::material_id(const std::optional<Material>& material) {
+    if (!material) return no_material;
+    materials_.push_back(*material);
+    return static_cast<MaterialId>(materials_.size() - 1);
+}
+
+std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node) {
+    if (const auto known = prepared_.find(node.get()); known != prepared_.end()) return known->second;
+
+    std::shared_ptr<const Primitive> primitive;
+    MaterialId around = material_id(node->material);  // what an instance around the primitive gives
+    switch (node->kind) {
+        case SceneNode::Kind::Object: {
+            const Object& o = node->object;
+            const std::string name = node->name.empty() ? "#" + std::to_string(leaves_.size() + 1) : node->name;
+            LeafDescription d{name,
+                              o.surface,
+                              o.bounds,
+                              overrides_.method.value_or(o.method),
+                              overrides_.solver.value_or(o.solver),
+                              overrides_.normals.value_or(o.normals),
+                              around};
+            around = no_material;  // the leaf's own
+            try {
+                auto leaf = std::make_shared<const ImplicitLeaf>(leaves_.size(), std::move(d));
+                leaves_.push_back(leaf.get());
+                primitive = std::move(leaf);
+            } catch (const std::invalid_argument& e) {
+                throw RenderError("object '" + name + "': " + e.what());
+            }
+            break;
+        }
+        case SceneNode::Kind::Group: {
+            std::vector<std::shared_ptr<const Primitive>> children;
+            for (const SceneNodePtr& child : node->children) children.push_back(prepare(child));
+            primitive = children.size() == 1 ? children.front() : std::make_shared<Group>(std::move(children));
+            break;
+        }
+        case SceneNode::Kind::Intersection:
+        case SceneNode::Kind::Difference: {
+            std::vector<std::shared_ptr<const Primitive>> children;
+            for (const SceneNodePtr& child : node->children) children.push_back(prepare(child));
+            const auto op = node->kind == SceneNode::Kind::Intersection ? CsgNode::Operation::Intersection
+                                                                        : CsgNode::Operation::Difference;
+            primitive = std::make_shared<CsgNode>(op, std::move(children));
+            break;
+        }
+    }
+    if (!node->transform.is_identity() || around != no_material) {
+        try {
+            primitive = std::make_shared<Instance>(std::move(primitive), node->transform, around);
+        } catch (const std::invalid_argument& e) {
+            throw RenderError(e.what());
+        }
+    }
+    prepared_.emplace(node.get(), primitive);
+    return primitive;
+}
+
+}  // namespace zeroset

@@ -1,0 +1,56 @@
+// PreparedScene: the scene's tree compiled once into primitives (accel/) —
+// each object's tape, bounds, method and tolerances; instances of a shared
+// node share its primitive, so a shape placed a thousand times is compiled
+// once — plus the table of materials and the lights. Shared, read-only, by
+// every render thread.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "zeroset/accel/implicit_leaf.hpp"
+#include "zeroset/accel/primitive.hpp"
+#include "zeroset/scene/scene.hpp"
+
+namespace zeroset {
+
+/// What a render may impose on every object, whatever the scene says.
+struct ObjectOverrides {
+    std::optional<Method> method;
+    std::optional<PolynomialSolver> solver;
+    std::optional<NormalMode> normals;
+};
+
+class PreparedScene {
+public:
+    /// Throws RenderError when an object cannot be traced as asked (e.g. the
+    /// polynomial method on a surface that is not a polynomial).
+    explicit PreparedScene(const Scene& scene, const ObjectOverrides& overrides = {});
+
+    [[nodiscard]] const Scene& scene() const { return *scene_; }
+    /// The whole scene as one primitive.
+    [[nodiscard]] const Primitive& root() const { return *root_; }
+    /// Every distinct implicit leaf, by id.
+    [[nodiscard]] const std::vector<const ImplicitLeaf*>& leaves() const { return leaves_; }
+    /// The material of a hit (the default one for no_material).
+    [[nodiscard]] const Material& material(MaterialId id) const;
+    /// The scene's lights, or — when it has none — one white point light at the camera.
+    [[nodiscard]] const std::vector<Light>& lights() const { return lights_; }
+
+private:
+    std::shared_ptr<const Primitive> prepare(const SceneNodePtr& node);
+    MaterialId material_id(const std::optional<Material>& material);
+
+    const Scene* scene_;
+    ObjectOverrides overrides_;
+    std::vector<Light> lights_;
+    std::vector<Material> materials_;
+    Material default_material_;
+    std::vector<const ImplicitLeaf*> leaves_;
+    std::unordered_map<const SceneNode*, std::shared_ptr<const Primitive>> prepared_;  // by node, for sharing
+    std::shared_ptr<const Primitive> root_;
+};
+
+}  // namespace zeroset

@@ -1,0 +1,360 @@
+// The scene's tree in the scene language (docs/scene-language.md): objects,
+// groups and unions, intersections and differences, shapes and their
+// instances, and loops over all of them.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "zeroset/scene/constant_value.hpp"
+#include "zeroset/scene/expression_parser.hpp"
+#include "zeroset/scene/scene_error.hpp"
+#include "zeroset/scene/scene_parser.hpp"
+#include "zeroset/scene/wording.hpp"
+
+namespace zeroset {
+
+namespace {
+
+constexpr std::array<std::string_view, 6> object_keys{"surface", "bounds", "method", "solver", "normals", "material"};
+constexpr std::array<std::string_view, 5> transform_keys{"translate", "rotate", "scale", "shear", "matrix"};
+constexpr std::array<std::string_view, 6> node_keywords{"object",     "group",    "union", "intersection",
+                                                        "difference", "instance"};
+
+/// Blocks and bodies nest at most this deep (past it the text is refused
+/// rather than risking the stack).
+constexpr int max_nesting = 200;
+/// Loop iterations a scene may read, in all.
+constexpr long long max_iterations = 10'000'000;
+
+bool is_one_of(std::span<const std::string_view> names, const Token& token) {
+    return token.kind == TokenKind::Name && std::ranges::find(names, token.text) != names.end();
+}
+
+std::string at_line(SourceLocation where) {
+    return "line " + std::to_string(where.line) + ", column " + std::to_string(where.column);
+}
+
+/// A SceneError with a note on where it was reached from appended.
+SceneError with_note(const SceneError& e, const std::string& note) {
+    if (e.line() == 0) return SceneError(e.file(), e.message() + " (" + note + ")");
+    return SceneError(e.file(), {e.line(), e.column()}, e.message() + " (" + note + ")");
+}
+
+}  // namespace
+
+class SceneParser::Nesting {
+public:
+    Nesting(SceneParser& parser, const Token& at) : parser_(parser) {
+        if (++parser_.depth_ > max_nesting)
+            parser_.in_->fail(at.where, "blocks nested too deeply (more than " + std::to_string(max_nesting) + " levels)");
+    }
+    ~Nesting() { --parser_.depth_; }
+    Nesting(const Nesting&) = delete;
+    Nesting& operator=(const Nesting&) = delete;
+
+private:
+    SceneParser& parser_;
+};
+
+bool SceneParser::at_node_statement() const { return is_one_of(node_keywords, in_->peek()); }
+
+void SceneParser::node_statement(const NodeSink& sink) {
+    const Token& keyword = in_->next();
+    const Nesting nesting(*this, keyword);
+    const std::string_view k = keyword.text;
+    if (k == "object") sink(object(keyword));
+    else if (k == "group" || k == "union") sink(composite(keyword, SceneNode::Kind::Group));
+    else if (k == "intersection") sink(composite(keyword, SceneNode::Kind::Intersection));
+    else if (k == "difference") sink(composite(keyword, SceneNode::Kind::Difference));
+    else sink(instance(keyword));
+}
+
+SceneNodePtr SceneParser::object(const Token& keyword) {
+    auto node = std::make_shared<SceneNode>();
+    if (in_->at(TokenKind::String)) node->name = in_->next().text;
+    Object& object = node->object;
+    bool has_surface = false;
+    std::vector<std::string_view> keys(object_keys.begin(), object_keys.end());
+    keys.insert(keys.end(), transform_keys.begin(), transform_keys.end());
+    const std::string block_name(keyword.text);
+    in_->expect(TokenKind::LeftBrace);
+    std::map<std::string_view, SourceLocation> seen;
+    while (!in_->accept(TokenKind::RightBrace)) {
+        const Token& key = in_->peek();
+        if (key.kind == TokenKind::End)
+            in_->fail(key.where, "expected '}' to close the object block opened at " + at_line(keyword.where) +
+                                     ", but found end of file");
+        if (!is_one_of(keys, key))
+            in_->fail(key.where, key.kind == TokenKind::Name
+                                     ? "unknown key '" + std::string(key.text) + "' in the object block (expected " +
+                                           join_words(keys, "or") + ")"
+                                     : "expected a key (" + join_words(keys, "or") + ") or '}' but found " +
+                                           describe(key));
+        in_->next();
+        if (is_one_of(transform_keys, key)) {
+            node->transform = transform(key) * node->transform;  // applied after the ones before it
+            continue;
+        }
+        if (const auto first = seen.find(key.text); first != seen.end())
+            in_->fail(key.where, "'" + std::string(key.text) + "' is already set in this object block (at " +
+                                     at_line(first->second) + ")");
+        seen.emplace(key.text, key.where);
+        if (key.text == "surface") {
+            const auto [surface, where] = value();
+            if (surface.is_vector())
+                in_->fail(where, "the surface must be a number (an expression in x, y, z), but found a vector");
+            if (surface.number().is_constant_valued())
+                in_->fail(where, "the surface must depend on x, y or z, but it is the constant " +
+                                     format_number(surface.number().value()));
+            object.surface = surface.number();
+            has_surface = true;
+        } else if (key.text == "bounds") {
+            object.bounds = bounds();
+        } else if (key.text == "method") {
+            object.method = method();
+        } else if (key.text == "solver") {
+            object.solver = polynomial_solver();
+        } else if (key.text == "normals") {
+            object.normals = normal_mode();
+        } else {
+            node->material = material(key);
+        }
+    }
+    if (!has_surface) in_->fail(keyword.where, "an object needs a surface");
+    return node;
+}
+
+SceneNodePtr SceneParser::composite(const Token& keyword, SceneNode::Kind kind) {
+    auto node = std::make_shared<SceneNode>();
+    node->kind = kind;
+    if (in_->at(TokenKind::String)) node->name = in_->next().text;
+    in_->expect(TokenKind::LeftBrace);
+    node_body(keyword, *node);
+    if (kind != SceneNode::Kind::Group && node->children.empty())
+        in_->fail(keyword.where, "an " + std::string(keyword.text) + " needs at least one object, group or instance");
+    return node;
+}
+
+bool SceneParser::child_entry(SceneNode& node) {
+    const Token& entry = in_->peek();
+    if (at_node_statement()) {
+        node_statement([&node](SceneNodePtr child) { node.children.push_back(std::move(child)); });
+        return true;
+    }
+    if (entry.kind != TokenKind::Name) return false;
+    if (entry.text == "let") {
+        in_->next();
+        let();
+        return true;
+    }
+    if (entry.text == "for") {
+        in_->next();
+        loop(entry, [this, &node] {
+            while (!in_->accept(TokenKind::RightBrace))
+                if (!child_entry(node))
+                    in_->fail_expected("an object, group, union, intersection, difference, instance, let, for or '}'");
+        });
+        return true;
+    }
+    return false;
+}
+
+void SceneParser::node_body(const Token& keyword, SceneNode& node) {
+    std::optional<SourceLocation> material_at;
+    while (!in_->accept(TokenKind::RightBrace)) {
+        const Token& entry = in_->peek();
+        if (entry.kind == TokenKind::End)
+            in_->fail(entry.where, "expected '}' to close the " + std::string(keyword.text) + " block opened at " +
+                                       at_line(keyword.where) + ", but found end of file");
+        if (child_entry(node)) continue;
+        if (is_one_of(transform_keys, entry)) {
+            in_->next();
+            node.transform = transform(entry) * node.transform;  // applied after the ones before it
+            continue;
+        }
+        if (entry.kind == TokenKind::Name && entry.text == "material") {
+            if (material_at)
+                in_->fail(entry.where, "'material' is already set in this " + std::string(keyword.text) + " block (at " +
+                                           at_line(*material_at) + ")");
+            material_at = entry.where;
+            in_->next();
+            node.material = material(entry);
+            continue;
+        }
+        in_->fail_expected("an object, group, union, intersection, difference, instance, let, for, a transform "
+                           "(translate, rotate, scale, shear, matrix), material or '}'");
+    }
+}
+
+void SceneParser::skip_block(std::string_view what) {
+    const Token& open = in_->expect(TokenKind::LeftBrace);
+    for (int level = 1; level > 0;) {
+        const Token& t = in_->next();
+        if (t.kind == TokenKind::End)
+            in_->fail(t.where, "expected '}' to close the " + std::string(what) + " opened at " + at_line(open.where) +
+                                   ", but found end of file");
+        if (t.kind == TokenKind::LeftBrace) ++level;
+        if (t.kind == TokenKind::RightBrace) --level;
+    }
+}
+
+void SceneParser::shape() {
+    const Token& name = in_->expect(TokenKind::Name);
+    check_unbound(name);
+    auto definition = std::make_shared<ShapeDefinition>();
+    definition->name = std::string(name.text);
+    if (in_->accept(TokenKind::LeftParen) && !in_->accept(TokenKind::RightParen)) {
+        do {
+            const Token& parameter = in_->expect(TokenKind::Name);
+            check_unbound(parameter);
+            const std::string p(parameter.text);
+            if (std::ranges::find(definition->parameters, p) != definition->parameters.end())
+                in_->fail(parameter.where, "the shape already has a parameter '" + p + "'");
+            definition->parameters.push_back(p);
+        } while (in_->accept(TokenKind::Comma));
+        if (!in_->accept(TokenKind::RightParen)) in_->fail_expected("',' or ')'");
+    }
+    if (!in_->at(TokenKind::LeftBrace)) in_->fail_expected("'{' to start the shape's body");
+    definition->stream = in_;
+    definition->body = in_->position();
+    definition->visible = scope_.mark();
+    definition->dir = dir_;
+    skip_block("shape body");  // read when the shape is placed, once per list of arguments
+    Binding binding{Expr(), format_location(in_->file_name(), name.where), definition};
+    scope_.define(definition->name, std::move(binding));
+}
+
+SceneNodePtr SceneParser::instance(const Token& keyword) {
+    const Token& name = in_->expect(TokenKind::Name);
+    const Binding* binding = scope_.find(name.text);
+    if (!binding || !binding->shape)
+        in_->fail(name.where, binding ? "'" + std::string(name.text) + "' is not a shape"
+                                      : "unknown shape '" + std::string(name.text) + "'");
+    const std::shared_ptr<ShapeDefinition> definition = binding->shape;
+    std::vector<Value> arguments;
+    if (in_->accept(TokenKind::LeftParen) && !in_->accept(TokenKind::RightParen)) {
+        do arguments.push_back(value().value);
+        while (in_->accept(TokenKind::Comma));
+        if (!in_->accept(TokenKind::RightParen)) in_->fail_expected("',' or ')'");
+    }
+    if (arguments.size() != definition->parameters.size())
+        in_->fail(name.where, "shape '" + definition->name + "' takes " +
+                                  std::to_string(definition->parameters.size()) + " argument" +
+                                  (definition->parameters.size() == 1 ? "" : "s") + ", but " +
+                                  std::to_string(arguments.size()) + (arguments.size() == 1 ? " was" : " were") +
+                                  " given");
+    std::vector<const void*> key;
+    for (const Value& a : arguments) {
+        if (a.is_vector())
+            for (const Expr& e : a.vector()) key.push_back(e.id());
+        else
+            key.push_back(a.number().id());
+        key.push_back(nullptr);  // separates the arguments
+    }
+    SceneNodePtr& shape = definition->read[key];
+    if (!shape) {
+        // Read the body where it is written, seeing what was visible there.
+        TokenStream* const outer = std::exchange(in_, definition->stream);
+        std::filesystem::path outer_dir = std::exchange(dir_, definition->dir);
+        const std::size_t resume = in_->position();
+        try {
+            const Scope::Frame frame(scope_, definition->visible);
+            for (std::size_t i = 0; i < arguments.size(); ++i)
+                scope_.define(definition->parameters[i], {arguments[i], "a parameter of shape " + definition->name});
+            in_->seek(definition->body);
+            const Token& open = in_->next();
+            auto node = std::make_shared<SceneNode>();
+            node->name = definition->name;
+            node_body(open, *node);
+            shape = std::move(node);
+        } catch (const SceneError& e) {
+            in_->seek(resume);
+            in_ = outer;
+            dir_ = std::move(outer_dir);
+            definition->read.erase(key);
+            throw with_note(e, "in shape '" + definition->name + "' placed at " +
+                                   format_location(in_->file_name(), name.where));
+        }
+        in_->seek(resume);
+        in_ = outer;
+        dir_ = std::move(outer_dir);
+    }
+    auto node = std::make_shared<SceneNode>();
+    node->kind = SceneNode::Kind::Group;
+    node->name = definition->name;
+    node->children.push_back(shape);
+    if (in_->accept(TokenKind::LeftBrace)) {
+        std::optional<SourceLocation> material_at;
+        while (!in_->accept(TokenKind::RightBrace)) {
+            const Token& entry = in_->peek();
+            if (is_one_of(transform_keys, entry)) {
+                in_->next();
+                node->transform = transform(entry) * node->transform;
+            } else if (entry.kind == TokenKind::Name && entry.text == "material") {
+                if (material_at)
+                    in_->fail(entry.where, "'material' is already set in this instance block (at " +
+                                               at_line(*material_at) + ")");
+                material_at = entry.where;
+                in_->next();
+                node->material = material(entry);
+            } else {
+                if (entry.kind == TokenKind::End)
+                    in_->fail(entry.where, "expected '}' to close the instance block opened at " +
+                                               at_line(keyword.where) + ", but found end of file");
+                in_->fail_expected("a transform (translate, rotate, scale, shear, matrix), material or '}'");
+            }
+        }
+    }
+    return node;
+}
+
+void SceneParser::loop(const Token& keyword, const std::function<void()>& body) {
+    const Token& name = in_->expect(TokenKind::Name);
+    check_unbound(name);
+    const auto expect_word = [this](std::string_view word) {
+        const Token& t = in_->peek();
+        if (t.kind != TokenKind::Name || t.text != word) in_->fail_expected("'" + std::string(word) + "'");
+        in_->next();
+    };
+    expect_word("from");
+    const auto [first, first_at] = number("the loop's start");
+    expect_word("to");
+    const auto [last, last_at] = number("the loop's end");
+    double step = 1.0;
+    if (in_->peek().kind == TokenKind::Name && in_->peek().text == "step") {
+        in_->next();
+        const auto [s, step_at] = number("the loop's step");
+        if (s == 0.0) in_->fail(step_at, "the loop's step must not be 0");
+        step = s;
+    }
+    const double span = (last - first) / step;
+    if (span > static_cast<double>(max_iterations))
+        in_->fail(keyword.where, "the loop would run more than " + std::to_string(max_iterations) + " times");
+    const long long count = span < 0.0 ? 0 : static_cast<long long>(std::floor(span * (1.0 + 1e-12))) + 1;
+    if ((iterations_ += count) > max_iterations)
+        in_->fail(keyword.where, "the scene's loops would run more than " + std::to_string(max_iterations) +
+                                     " times in all");
+    if (!in_->at(TokenKind::LeftBrace)) in_->fail_expected("'{' to start the loop's body");
+    const Nesting nesting(*this, keyword);
+    const std::size_t start = in_->position();
+    const std::string defined_at = format_location(in_->file_name(), name.where);
+    for (long long k = 0; k < count; ++k) {
+        const double i = first + static_cast<double>(k) * step;
+        in_->seek(start);
+        in_->next();  // '{'
+        try {
+            const Scope::Frame frame(scope_, scope_.mark());
+            scope_.define(std::string(name.text), {Expr(i), defined_at});
+            body();
+        } catch (const SceneError& e) {
+            throw with_note(e, "in the loop at " + format_location(in_->file_name(), keyword.where) + " with " +
+                                   std::string(name.text) + " = " + format_number(i));
+        }
+    }
+    if (count == 0) {  // the body is not read at all
+        in_->seek(start);
+        skip_block("loop body");
+    }
+}
+
+}  // namespace zeroset

@@ -1,0 +1,79 @@
+// The affine transforms of the scene language (survey §9, eq. 36): translate,
+// rotate, scale, shear and matrix, each a Mat4 from an object's own space to
+// its parent's. Every one must be invertible — rays are moved by the inverse.
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "zeroset/scene/constant_value.hpp"
+#include "zeroset/scene/scene_parser.hpp"
+#include "zeroset/scene/wording.hpp"
+
+namespace zeroset {
+
+namespace {
+
+constexpr std::array<std::string_view, 6> shear_keys{"xy", "xz", "yx", "yz", "zx", "zy"};
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+double determinant3(const Mat4& m) {
+    const auto& a = m.m;
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+}
+
+}  // namespace
+
+Mat4 SceneParser::transform(const Token& keyword) {
+    const std::string_view k = keyword.text;
+    if (k == "translate") return Mat4::translate(vector("the translation").value);
+    if (k == "rotate") {
+        const auto [v, where] = value();
+        if (v.is_vector()) {
+            const Vec3d a = constant_vector(*in_, v, where, "the rotation angles");
+            return Mat4::rotate({0, 0, 1}, radians(a.z)) * Mat4::rotate({0, 1, 0}, radians(a.y)) *
+                   Mat4::rotate({1, 0, 0}, radians(a.x));
+        }
+        const double angle = constant_number(*in_, v, where, "the rotation angle");
+        const Token& word = in_->peek();
+        if (word.kind != TokenKind::Name || word.text != "around")
+            in_->fail_expected("'around' and an axis, as in rotate 30 around (0, 1, 0),");
+        in_->next();
+        const auto [axis, axis_at] = vector("the rotation axis");
+        if (!(length(axis) > 0.0)) in_->fail(axis_at, "the rotation axis must not be zero");
+        return Mat4::rotate(axis, radians(angle));
+    }
+    if (k == "scale") {
+        const auto [v, where] = value();
+        const Vec3d s = v.is_vector() ? constant_vector(*in_, v, where, "the scale")
+                                      : Vec3d{1, 1, 1} * constant_number(*in_, v, where, "the scale");
+        if (s.x == 0.0 || s.y == 0.0 || s.z == 0.0)
+            in_->fail(where, "a scale of 0 would flatten the object; scale by nonzero factors (negative mirrors)");
+        return Mat4::scale(s);
+    }
+    Mat4 m = Mat4::identity();
+    if (k == "shear") {
+        // x gains xy·y + xz·z, y gains yx·x + yz·z, z gains zx·x + zy·y.
+        block(keyword, shear_keys, [&](const Token& key) {
+            const int row = key.text[0] - 'x', column = key.text[1] - 'x';
+            m.m[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] =
+                number("shear " + std::string(key.text)).value;
+        });
+    } else {  // matrix (m00, m01, m02, m03, m10, …, m23): p' = A·p + t, row by row
+        in_->expect(TokenKind::LeftParen);
+        for (std::size_t i = 0; i < 12; ++i) {
+            if (i > 0 && !in_->accept(TokenKind::Comma))
+                in_->fail_expected("',' (a matrix has 12 numbers: 3 rows of A, each followed by its t)");
+            m.m[i / 4][i % 4] = number("a matrix entry").value;
+        }
+        in_->expect(TokenKind::RightParen);
+    }
+    const double det = determinant3(m);
+    if (!(std::abs(det) > 1e-12) || !std::isfinite(det))
+        in_->fail(keyword.where, std::string(k) + ": the transform is singular (determinant " + format_number(det) +
+                                     "); it would flatten the object");
+    return m;
+}
+
+}  // namespace zeroset
