@@ -40,6 +40,10 @@ Options:
   --solver S          the polynomial method's root solver for every object:
                       closed, sturm, descartes, laguerre, fast (default: the
                       object's, else fast)
+  --normals N         how every object's normals are computed: analytic (the
+                      exact gradient, eq. 33), fd (forward differences, eq. 34)
+                      or central (central differences); default: the object's,
+                      else analytic (see docs/rendering.md#normals)
   -q, --quiet         no progress bar and no summary line
   -h, --help          this text
 
@@ -51,7 +55,7 @@ A progress bar is drawn on stderr when it is a terminal; a one-line summary
 
 int render_command(const std::vector<std::string>& args) {
     const Options options(args, {"-o", "--output", "--width", "--height", "--spp", "--threads", "--method",
-                                 "--solver"},
+                                 "--solver", "--normals"},
                           {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(render_usage, stdout);
@@ -80,6 +84,10 @@ int render_command(const std::vector<std::string>& args) {
     if (const auto name = options.value("--solver")) {
         settings.solver = polynomial_solver_from_name(*name);
         if (!settings.solver) throw UsageError("unknown polynomial solver '" + *name + "' (try zeroset render --help)");
+    }
+    if (const auto name = options.value("--normals")) {
+        settings.normals = normal_mode_from_name(*name);
+        if (!settings.normals) throw UsageError("unknown normal mode '" + *name + "' (try zeroset render --help)");
     }
     validate(settings);
 

@@ -26,6 +26,38 @@ PossibleRoot first(const std::vector<double>& value, double radius0, double t0, 
                                std::span<const double>(extrema.data(), static_cast<std::size_t>(e.count)), false);
 }
 
+/// possible_roots over [t0, t1] with a constant radius.
+std::vector<double> all_possible(const std::vector<double>& value, double radius0, double t0, double t1) {
+    const std::vector<double> radius(value.size(), 0.0);
+    std::vector<double> r = radius;
+    r[0] = radius0;
+    std::array<double, 8> extrema{};
+    const PolynomialRoots e = fast_polynomial_extrema(value, t0, t1, extrema);
+    std::array<double, 8> out{};
+    int evaluations = 0;
+    const int n = possible_roots({value, r}, t0, t1,
+                                 std::span<const double>(extrema.data(), static_cast<std::size_t>(e.count)), out,
+                                 evaluations);
+    return {out.begin(), out.begin() + n};
+}
+
+TEST(PolynomialEnclosure, AllPossibleRootsIncludeGrazesBetweenCrossings) {
+    // (t − 0.5)(t − 3.5)·((t − 2)² + 1e-12): crossings at 0.5 and 3.5 and,
+    // between them, a dip at 2 that the bound cannot tell from a double root.
+    const std::vector<double> crossings{1.75, -4.0, 1.0};  // (t − 0.5)(t − 3.5)
+    const std::vector<double> dip_at_2{4.0 + 1e-12, -4.0, 1.0};
+    std::vector<double> p(5, 0.0);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) p[i + j] += crossings[i] * dip_at_2[j];
+    const std::vector<double> roots = all_possible(p, 1e-10, 0.0, 5.0);
+    ASSERT_EQ(roots.size(), 3u);
+    EXPECT_NEAR(roots[0], 0.5, 1e-12);
+    EXPECT_NEAR(roots[1], 2.0, 1e-5);
+    EXPECT_NEAR(roots[2], 3.5, 1e-12);
+    // With no rounding to fear, the dip is no root.
+    EXPECT_EQ(all_possible(p, 0.0, 0.0, 5.0).size(), 2u);
+}
+
 TEST(PolynomialEnclosure, ADipShallowerThanTheBoundIsAHit) {
     // F̂ stays 1e-12 above 0, but F may be anywhere within 1e-11 of F̂.
     const PossibleRoot r = first(dip(1e-12), 1e-11, 0.0, 3.0);

@@ -228,7 +228,7 @@ TEST(SceneParser, ObjectChecks) {
     EXPECT_THAT(error_of("object { surface x  method 3 }"),
                 testing::StartsWith("scene.zs:1:28: expected a method (auto"));
     EXPECT_EQ(error_of("object { surface x  normals exact }"),
-              "scene.zs:1:29: unknown normal mode 'exact' (expected analytic or fd)");
+              "scene.zs:1:29: unknown normal mode 'exact' (expected analytic, fd or central)");
     EXPECT_EQ(error_of("object { surface x  material { diffuse -0.5 } }"),
               "scene.zs:1:40: diffuse must not be negative, but it is -0.5");
 }

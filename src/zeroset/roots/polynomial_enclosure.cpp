@@ -93,4 +93,30 @@ PossibleRoot first_possible_root(PolynomialEnclosure f, double t0, double t1, st
     return r;
 }
 
+int possible_roots(PolynomialEnclosure f, double t0, double t1, std::span<const double> extrema,
+                   std::span<double> out, int& evaluations) {
+    int count = 0;
+    const auto add = [&](double t) {
+        if (count < static_cast<int>(out.size()) && (count == 0 || t > out[static_cast<std::size_t>(count) - 1]))
+            out[static_cast<std::size_t>(count++)] = t;
+    };
+    EnclosureSample a = sample_enclosure(f, t0);
+    ++evaluations;
+    for (std::size_t i = 0; i <= extrema.size(); ++i) {
+        const double t = i < extrema.size() ? extrema[i] : t1;
+        if (t <= a.value.t || t > t1) continue;
+        const EnclosureSample b = sample_enclosure(f, t);
+        ++evaluations;
+        if (b.value.value == 0.0) {
+            add(t);
+        } else if (a.value.value != 0.0 && (a.value.value < 0.0) != (b.value.value < 0.0)) {
+            add(monotone_root(f.value, a.value, b.value, evaluations));
+        } else if (b.uncertain()) {
+            add(t);  // the piece ends within R of 0 without crossing: a graze (or F's double root)
+        }
+        a = b;
+    }
+    return count;
+}
+
 }  // namespace zeroset

@@ -47,4 +47,12 @@ double enclosure_bound(PolynomialEnclosure f, double t);
 PossibleRoot first_possible_root(PolynomialEnclosure f, double t0, double t1, std::span<const double> extrema,
                                  bool t1_is_root);
 
+/// Every t in (t0, t1] where F may vanish, increasing, by the same scan over
+/// the whole span: F̂'s roots, and one point for each piece that comes
+/// within R of 0 without a sign change (a graze, or a double root of F).
+/// Writes at most out.size() of them; returns how many, and counts the
+/// evaluations of F̂ in `evaluations`.
+int possible_roots(PolynomialEnclosure f, double t0, double t1, std::span<const double> extrema,
+                   std::span<double> out, int& evaluations);
+
 }  // namespace zeroset

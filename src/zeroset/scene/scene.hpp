@@ -70,7 +70,7 @@ using SceneNodePtr = std::shared_ptr<const SceneNode>;
 /// several parents, each with its own transform and material (an instance).
 struct SceneNode {
     enum class Kind { Object, Group, Intersection, Difference };
-    Kind kind = Kind::Object;
+    Kind kind = Kind::Group;
     std::string name;                    // for messages, statistics and `zeroset ray --object`
     Object object;                       // Kind::Object
     std::vector<SceneNodePtr> children;  // the other kinds

@@ -71,6 +71,7 @@ void SceneParser::node_statement(const NodeSink& sink) {
 
 SceneNodePtr SceneParser::object(const Token& keyword) {
     auto node = std::make_shared<SceneNode>();
+    node->kind = SceneNode::Kind::Object;
     if (in_->at(TokenKind::String)) node->name = in_->next().text;
     Object& object = node->object;
     bool has_surface = false;
@@ -131,7 +132,8 @@ SceneNodePtr SceneParser::composite(const Token& keyword, SceneNode::Kind kind) 
     in_->expect(TokenKind::LeftBrace);
     node_body(keyword, *node);
     if (kind != SceneNode::Kind::Group && node->children.empty())
-        in_->fail(keyword.where, "an " + std::string(keyword.text) + " needs at least one object, group or instance");
+        in_->fail(keyword.where, std::string(kind == SceneNode::Kind::Intersection ? "an " : "a ") +
+                                     std::string(keyword.text) + " needs at least one object, group or instance");
     return node;
 }
 
@@ -251,8 +253,10 @@ SceneNodePtr SceneParser::instance(const Token& keyword) {
             key.push_back(a.number().id());
         key.push_back(nullptr);  // separates the arguments
     }
-    SceneNodePtr& shape = definition->read[key];
+    ShapeDefinition::Reading& reading = definition->read[key];
+    SceneNodePtr& shape = reading.node;
     if (!shape) {
+        reading.arguments = arguments;
         // Read the body where it is written, seeing what was visible there.
         TokenStream* const outer = std::exchange(in_, definition->stream);
         std::filesystem::path outer_dir = std::exchange(dir_, definition->dir);

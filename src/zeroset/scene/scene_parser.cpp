@@ -276,8 +276,8 @@ PolynomialSolver SceneParser::polynomial_solver() {
 }
 
 NormalMode SceneParser::normal_mode() {
-    const std::array<std::string_view, 2> names{normal_mode_name(NormalMode::Analytic),
-                                                normal_mode_name(NormalMode::ForwardDifference)};
+    std::vector<std::string_view> names;
+    for (const NormalMode m : all_normal_modes()) names.push_back(normal_mode_name(m));
     return *normal_mode_from_name(choice("normal mode", names).text);
 }
 

@@ -35,7 +35,13 @@ struct ShapeDefinition {
     std::size_t body;     // … at its '{'
     std::size_t visible;  // the Scope mark where it is defined
     std::filesystem::path dir;  // the directory of its file (paths in it start there)
-    std::map<std::vector<const void*>, SceneNodePtr> read;  // by the arguments' expression nodes
+    /// Each reading, by the ids of its arguments' expression nodes; the
+    /// arguments are kept with it, so that no id is ever reused.
+    struct Reading {
+        std::vector<Value> arguments;
+        SceneNodePtr node;
+    };
+    std::map<std::vector<const void*>, Reading> read;
 };
 
 class SceneParser {

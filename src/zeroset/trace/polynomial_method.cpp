@@ -99,18 +99,11 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
     std::array<double, RayPolynomialProgram::max_degree> extrema{};
     int extremum_count = 0;
     std::optional<double> root;
-    if (settings_.polynomial_solver == PolynomialSolver::Fast) {
-        const PolynomialRoots e = fast_polynomial_extrema(value, c.s0, c.s1, extrema);
-        counters.point_evaluations += static_cast<std::uint64_t>(e.evaluations);
-        extremum_count = e.count;
-    } else {
+    if (settings_.polynomial_solver != PolynomialSolver::Fast) {
         root = solve_first(c.s1);
         if (root && std::abs(horner(value, *root).value) > enclosure_bound(enclosure, *root)) root.reset();
-        std::array<double, RayPolynomialProgram::max_degree> derivative{};
-        for (std::size_t i = 1; i < value.size(); ++i) derivative[i - 1] = static_cast<double>(i) * value[i];
-        extremum_count = solve(std::span<const double>(derivative.data(), value.size() - 1), c.s0,
-                               root.value_or(c.s1), extrema, counters);
     }
+    extremum_count = extrema_of(value, c.s0, root.value_or(c.s1), extrema, counters);
     const PossibleRoot hit =
         first_possible_root(enclosure, c.s0, root.value_or(c.s1),
                             std::span<const double>(extrema.data(), static_cast<std::size_t>(extremum_count)),
@@ -138,10 +131,37 @@ HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<doub
     ++counters.point_evaluations;
     const CentredSpan c = centre(span);
     program_.evaluate(h.ray(), c.t_c);
+    const std::span<const double> value = program_.value();
     std::array<double, RayPolynomialProgram::max_degree> roots{};
-    const int count = solve(program_.value(), c.s0, c.s1, roots, counters);
+    int count = 0;
+    if (!program_.error_known()) {  // no bound to guard with: F̂'s roots
+        count = solve(value, c.s0, c.s1, roots, counters);
+    } else {
+        // Guarded as the first hit is: F̂'s roots, and its extrema that come
+        // within the rounding bound of 0 — so that spans built from these
+        // hits (Roth CSG) miss no graze either.
+        std::array<double, RayPolynomialProgram::max_degree> extrema{};
+        const int extremum_count = extrema_of(value, c.s0, c.s1, extrema, counters);
+        int evaluations = 0;
+        count = possible_roots(current_enclosure(), c.s0, c.s1,
+                               std::span<const double>(extrema.data(), static_cast<std::size_t>(extremum_count)), roots,
+                               evaluations);
+        counters.point_evaluations += static_cast<std::uint64_t>(evaluations);
+    }
     for (int i = 0; i < count; ++i) hits.push_back(std::clamp(c.t_c + roots[static_cast<std::size_t>(i)], span.t0, span.t1));
     return count > 0 ? HitStatus::Ok : HitStatus::NoHit;
+}
+
+int PolynomialMethod::extrema_of(std::span<const double> value, double s0, double s1, std::span<double> out,
+                                 TraceCounters& counters) const {
+    if (settings_.polynomial_solver == PolynomialSolver::Fast) {
+        const PolynomialRoots e = fast_polynomial_extrema(value, s0, s1, out);
+        counters.point_evaluations += static_cast<std::uint64_t>(e.evaluations);
+        return e.count;
+    }
+    std::array<double, RayPolynomialProgram::max_degree> derivative{};
+    for (std::size_t i = 1; i < value.size(); ++i) derivative[i - 1] = static_cast<double>(i) * value[i];
+    return solve(std::span<const double>(derivative.data(), value.size() - 1), s0, s1, out, counters);
 }
 
 }  // namespace zeroset

@@ -10,7 +10,9 @@
 // (expr/ray_polynomial_program.hpp), with a proven bound R on its rounding,
 // so F is known as F̂ ± R. The first hit is guarded (roots/polynomial_enclosure.hpp): an extremum of F̂ before
 // its first root that comes within R of 0 is a graze the arithmetic cannot
-// resolve, and counts as a hit rather than a miss. all_hits lists F̂'s roots.
+// resolve, and counts as a hit rather than a miss. all_hits is guarded the
+// same way: F̂'s roots and every unresolvable graze, so spans built from it
+// (Roth CSG, accel/) lose nothing the first hit would find.
 #pragma once
 
 #include <array>
@@ -40,6 +42,11 @@ public:
 private:
     /// The real roots of F in [t0, t1], increasing, into `out`; their number.
     int solve(std::span<const double> f, double t0, double t1, std::span<double> out, TraceCounters& counters) const;
+
+    /// F̂'s extrema in [s0, s1] (the fast solver finds them on its way; any
+    /// other solves F̂′), increasing, into `out`; their number.
+    int extrema_of(std::span<const double> value, double s0, double s1, std::span<double> out,
+                   TraceCounters& counters) const;
 
     /// F̂ from the program's last run, with its coefficients' radii.
     PolynomialEnclosure current_enclosure();

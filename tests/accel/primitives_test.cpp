@@ -1,0 +1,206 @@
+// Implicit leaves, instances, groups and CSG nodes (accel/) against the
+// same shapes written as single expressions and traced as one leaf: the
+// first hits, spans and normals must agree.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "zeroset/accel/csg.hpp"
+#include "zeroset/accel/group.hpp"
+#include "zeroset/accel/implicit_leaf.hpp"
+#include "zeroset/accel/instance.hpp"
+#include "zeroset/accel/trace_scratch.hpp"
+
+namespace zeroset {
+namespace {
+
+const Expr x = var_x(), y = var_y(), z = var_z();
+
+Expr ball(const Vec3d& c, double r) { return square(x - c.x) + square(y - c.y) + square(z - c.z) - r * r; }
+Expr cube(double h) { return max(max(abs(x), abs(y)), abs(z)) - h; }
+
+class Leaves {
+public:
+    std::shared_ptr<const ImplicitLeaf> add(const Expr& f, const Box3& box, Method method = Method::Auto,
+                                            MaterialId material = no_material) {
+        LeafDescription d;
+        d.name = "leaf " + std::to_string(count_);
+        d.surface = f;
+        d.bounds = Bounds::make_box(box);
+        d.method = method;
+        d.material = material;
+        return std::make_shared<const ImplicitLeaf>(count_++, d);
+    }
+    [[nodiscard]] std::size_t count() const { return count_; }
+
+private:
+    std::size_t count_ = 0;
+};
+
+Box3 around(const Vec3d& c, double r) { return {c - Vec3d{r, r, r}, c + Vec3d{r, r, r}}; }
+
+Ray random_ray(std::mt19937& random, double reach) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const Vec3d target{u(random), u(random), u(random)};
+    Vec3d d{u(random), u(random), u(random)};
+    d = normalize(d);
+    return {target * 1.2 - d * reach, d};
+}
+
+/// The outward unit normal of a hit, in the query's space.
+Vec3d normal_of(const Hit& hit, TraceScratch& scratch) {
+    const SurfaceRef& s = hit.surface;
+    Vec3d n = s.to_local.transpose_transform_vector(s.leaf->local_normal(s, scratch));
+    if (s.flipped) n = -n;
+    return normalize(n);
+}
+
+TEST(Primitives, AnInstanceTracesLikeTheTransformedExpression) {
+    Leaves leaves;
+    const auto unit = leaves.add(ball({0, 0, 0}, 1.0), around({0, 0, 0}, 1.01));
+    // An ellipsoid: the unit ball scaled by (2, 0.5, 1), rotated and moved.
+    const Mat4 m = Mat4::translate({0.3, -0.2, 0.1}) * Mat4::rotate({1, 1, 0}, 0.7) * Mat4::scale({0.8, 0.4, 0.6});
+    const Instance placed(unit, m, 4);
+    const Mat4 inverse = *m.inverse();
+    const auto at = [&](int row) {
+        return inverse.m[row][0] * x + inverse.m[row][1] * y + inverse.m[row][2] * z + inverse.m[row][3];
+    };
+    const Expr moved = square(at(0)) + square(at(1)) + square(at(2)) - 1.0;
+    const auto reference = leaves.add(moved, around({0, 0, 0}, 1.5), Method::Interval);
+    TraceScratch scratch(leaves.count());
+    std::mt19937 random(11);
+    int hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Ray ray = random_ray(random, 4.0);
+        const auto a = placed.first_hit(ray, 0.0, INFINITY, scratch);
+        const auto b = reference->first_hit(ray, 0.0, INFINITY, scratch);
+        ASSERT_EQ(a.has_value(), b.has_value()) << i;
+        if (!a) continue;
+        ++hits;
+        EXPECT_NEAR(a->t, b->t, 1e-9);
+        EXPECT_EQ(a->surface.material, 4);
+        EXPECT_NEAR(length(normal_of(*a, scratch) - normal_of(*b, scratch)), 0.0, 1e-6);
+        // Spans: enter and leave where the expression does.
+        SpanList sa, sb;
+        placed.spans(ray, 0.0, INFINITY, scratch, sa);
+        reference->spans(ray, 0.0, INFINITY, scratch, sb);
+        ASSERT_EQ(sa.size(), sb.size());
+        for (std::size_t k = 0; k < sa.size(); ++k) {
+            EXPECT_NEAR(sa[k].enter.t, sb[k].enter.t, 1e-9);
+            EXPECT_NEAR(sa[k].exit.t, sb[k].exit.t, 1e-9);
+        }
+    }
+    EXPECT_GT(hits, 300);
+}
+
+TEST(Primitives, AGroupFindsTheNearestOfItsChildren) {
+    Leaves leaves;
+    std::vector<std::shared_ptr<const Primitive>> children;
+    std::vector<std::shared_ptr<const ImplicitLeaf>> all;
+    std::mt19937 random(13);
+    std::uniform_real_distribution<double> u(-1.0, 1.0), r(0.02, 0.15);
+    for (int i = 0; i < 200; ++i) {
+        const Vec3d c{u(random), u(random), u(random)};
+        const double radius = r(random);
+        all.push_back(leaves.add(ball(c, radius), around(c, radius * 1.01), Method::Auto, i));
+        children.push_back(all.back());
+    }
+    const Group group(children, 2);
+    TraceScratch scratch(leaves.count());
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Ray ray = random_ray(random, 3.0);
+        std::optional<Hit> nearest;
+        for (const auto& leaf : all) {
+            const auto h = leaf->first_hit(ray, 0.0, INFINITY, scratch);
+            if (h && (!nearest || h->t < nearest->t)) nearest = h;
+        }
+        const auto found = group.first_hit(ray, 0.0, INFINITY, scratch);
+        ASSERT_EQ(found.has_value(), nearest.has_value());
+        EXPECT_EQ(group.occluded(ray, 0.0, INFINITY, scratch), nearest.has_value());
+        if (!found) continue;
+        ++hits;
+        EXPECT_NEAR(found->t, nearest->t, 1e-12 * nearest->t);  // a shorter span rounds differently
+        EXPECT_EQ(found->surface.material, nearest->surface.material);
+        EXPECT_FALSE(group.occluded(ray, 0.0, 0.999 * nearest->t, scratch));
+    }
+    EXPECT_GT(hits, 500);
+}
+
+TEST(Primitives, RothCsgAgreesWithMinAndMaxOfOneExpression) {
+    // (cube ∩ ball) − (three rods), as span lists of four leaves, each with
+    // its own method, and as one expression traced by the interval method.
+    Leaves leaves;
+    const Expr rods_x = square(y) + square(z) - 0.3, rods_y = square(x) + square(z) - 0.3,
+               rods_z = square(x) + square(y) - 0.3;
+    const auto c = leaves.add(cube(1.0), around({0, 0, 0}, 1.1), Method::Interval);
+    const auto b = leaves.add(ball({0, 0, 0}, 1.35), around({0, 0, 0}, 1.4), Method::Polynomial);
+    const Box3 rod_box{{-2, -0.6, -0.6}, {2, 0.6, 0.6}};
+    const auto rx = leaves.add(rods_x, rod_box, Method::Sphere);
+    const auto ry = leaves.add(rods_y, {{-0.6, -2, -0.6}, {0.6, 2, 0.6}}, Method::Lg);
+    const auto rz = leaves.add(rods_z, {{-0.6, -0.6, -2}, {0.6, 0.6, 2}}, Method::Polynomial);
+    const auto body = std::make_shared<CsgNode>(CsgNode::Operation::Intersection,
+                                                std::vector<std::shared_ptr<const Primitive>>{c, b});
+    const CsgNode part(CsgNode::Operation::Difference, {body, rx, ry, rz});
+    const Expr one = max(max(cube(1.0), ball({0, 0, 0}, 1.35)), -min(min(rods_x, rods_y), rods_z));
+    const auto reference = leaves.add(one, around({0, 0, 0}, 1.1), Method::Interval);
+    TraceScratch scratch(leaves.count());
+    std::mt19937 random(17);
+    int agree = 0, hits = 0;
+    const int rays = 4000;
+    for (int i = 0; i < rays; ++i) {
+        const Ray ray = random_ray(random, 4.0);
+        const auto a = part.first_hit(ray, 0.0, INFINITY, scratch);
+        const auto r = reference->first_hit(ray, 0.0, INFINITY, scratch);
+        if (a.has_value() != r.has_value()) continue;
+        if (a && std::abs(a->t - r->t) > 1e-7) continue;
+        ++agree;
+        if (!a) continue;
+        ++hits;
+        // The normal comes from the leaf that owns the boundary.
+        EXPECT_GT(dot(normal_of(*a, scratch), normal_of(*r, scratch)), 0.999) << i;
+    }
+    EXPECT_GE(agree, rays - 2);  // rays through an edge may differ by rounding
+    EXPECT_GT(hits, 1000);
+}
+
+TEST(Primitives, SpansMarkCutFacesAndRaysStartingInside) {
+    Leaves leaves;
+    // A ball cut by its bounds at |x| = 0.5.
+    const auto cut = leaves.add(ball({0, 0, 0}, 1.0), {{-0.5, -1.1, -1.1}, {0.5, 1.1, 1.1}});
+    TraceScratch scratch(leaves.count());
+    SpanList spans;
+    cut->spans({{-3, 0, 0}, {1, 0, 0}}, 0.0, INFINITY, scratch, spans);
+    ASSERT_EQ(spans.size(), 1u);
+    EXPECT_NEAR(spans[0].enter.t, 2.5, 1e-12);
+    EXPECT_EQ(spans[0].enter.surface.kind, BoundaryKind::Bounds);
+    EXPECT_EQ(spans[0].exit.surface.kind, BoundaryKind::Bounds);
+    const auto face = cut->first_hit({{-3, 0, 0}, {1, 0, 0}}, 0.0, INFINITY, scratch);
+    ASSERT_TRUE(face.has_value());
+    EXPECT_EQ(face->surface.kind, BoundaryKind::Bounds);
+    EXPECT_EQ(cut->local_normal(face->surface, scratch), (Vec3d{-1, 0, 0}));  // the cut's normal, not ∇f
+    // From inside: the span opens at t_min.
+    spans.clear();
+    cut->spans({{0, 0, 0}, {0, 1, 0}}, 0.0, INFINITY, scratch, spans);
+    ASSERT_EQ(spans.size(), 1u);
+    EXPECT_EQ(spans[0].enter.surface.kind, BoundaryKind::Open);
+    EXPECT_EQ(spans[0].enter.t, 0.0);
+    EXPECT_EQ(spans[0].exit.surface.kind, BoundaryKind::Surface);
+    EXPECT_NEAR(spans[0].exit.t, 1.0, 1e-12);
+}
+
+TEST(Primitives, ATangentRayGivesASpanOfLengthZero) {
+    Leaves leaves;
+    const auto sphere = leaves.add(ball({0, 0, 0}, 1.0), around({0, 0, 0}, 1.01), Method::Polynomial);
+    TraceScratch scratch(leaves.count());
+    SpanList spans;
+    sphere->spans({{-3, 1, 0}, {1, 0, 0}}, 0.0, INFINITY, scratch, spans);
+    ASSERT_EQ(spans.size(), 1u);
+    EXPECT_NEAR(spans[0].enter.t, 3.0, 1e-6);
+    EXPECT_EQ(spans[0].enter.t, spans[0].exit.t);
+}
+
+}  // namespace
+}  // namespace zeroset
