@@ -9,6 +9,7 @@
 
 #include "zeroset/accel/csg.hpp"
 #include "zeroset/accel/group.hpp"
+#include "zeroset/accel/half_space.hpp"
 #include "zeroset/accel/implicit_leaf.hpp"
 #include "zeroset/accel/instance.hpp"
 #include "zeroset/accel/trace_scratch.hpp"
@@ -200,6 +201,44 @@ TEST(Primitives, ATangentRayGivesASpanOfLengthZero) {
     ASSERT_EQ(spans.size(), 1u);
     EXPECT_NEAR(spans[0].enter.t, 3.0, 1e-6);
     EXPECT_EQ(spans[0].enter.t, spans[0].exit.t);
+}
+
+}  // namespace
+}  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Primitives, AHalfSpaceIsTracedInClosedForm) {
+    const HalfSpace floor("floor", y + 1.0, 2);  // y ≤ −1
+    TraceScratch scratch(0);
+    const auto hit = floor.first_hit({{0, 2, 0}, normalize(Vec3d{1, -1, 0})}, 0.0, INFINITY, scratch);
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_NEAR(hit->t, 3.0 * std::sqrt(2.0), 1e-12);
+    EXPECT_EQ(hit->surface.material, 2);
+    EXPECT_EQ(floor.local_normal(hit->surface, scratch), (Vec3d{0, 1, 0}));
+    EXPECT_FALSE(floor.first_hit({{0, 2, 0}, {0, 1, 0}}, 0.0, INFINITY, scratch).has_value());
+    EXPECT_FALSE(floor.first_hit({{0, 2, 0}, {0, -1, 0}}, 0.0, 2.5, scratch).has_value());  // beyond t_max
+    SpanList spans;
+    floor.spans({{0, -3, 0}, {0, 1, 0}}, 0.0, INFINITY, scratch, spans);  // from inside, leaving at y = −1
+    ASSERT_EQ(spans.size(), 1u);
+    EXPECT_EQ(spans[0].enter.surface.kind, BoundaryKind::Open);
+    EXPECT_NEAR(spans[0].exit.t, 2.0, 1e-15);
+    EXPECT_FALSE(is_bounded(floor.bounds()));
+    EXPECT_THROW(HalfSpace("curved", y * y - 1.0, no_material), std::invalid_argument);
+}
+
+TEST(Primitives, AGroupTestsItsUnboundedChildrenOnEveryRay) {
+    Leaves leaves;
+    const auto ball_leaf = leaves.add(ball({0, 0, 0}, 1.0), around({0, 0, 0}, 1.01));
+    const Group group({ball_leaf, std::make_shared<HalfSpace>("floor", y + 1.0, no_material)});
+    TraceScratch scratch(leaves.count());
+    const auto on_ball = group.first_hit({{0, 0, -5}, {0, 0, 1}}, 0.0, INFINITY, scratch);
+    ASSERT_TRUE(on_ball.has_value());
+    EXPECT_NEAR(on_ball->t, 4.0, 1e-12);
+    const auto on_floor = group.first_hit({{3, 0, -5}, {0, -1, 0}}, 0.0, INFINITY, scratch);
+    ASSERT_TRUE(on_floor.has_value());
+    EXPECT_NEAR(on_floor->t, 1.0, 1e-12);
 }
 
 }  // namespace

@@ -219,3 +219,24 @@ TEST(Renderer, GuaranteedMethodsHitTheSamePixels) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Renderer, OnlyAPlaneMayGoWithoutBounds) {
+    Scene scene;
+    Object o;
+    o.surface = square(var_x()) + square(var_y()) + square(var_z()) - 1.0;
+    o.bounds = Bounds::none();
+    scene.nodes.push_back(make_object_node(o, "ball"));
+    try {
+        render(scene, small());
+        FAIL() << "expected a RenderError";
+    } catch (const RenderError& e) {
+        EXPECT_EQ(std::string(e.what()), "object 'ball': an object without bounds must be a plane: its surface must be "
+                                         "of degree 1 in x, y and z (give it bounds otherwise)");
+    }
+}
+
+}  // namespace
+}  // namespace zeroset

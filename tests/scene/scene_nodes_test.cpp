@@ -127,6 +127,11 @@ TEST(SceneNodes, ABodySeesOnlyWhatWasVisibleWhereItIsWritten) {
               "scene.zs:2:9: 'r' is already bound (at scene.zs:1:5); a name can be bound only once");
 }
 
+TEST(SceneNodes, AnObjectWithoutBoundsMustBeAPlane) {
+    const Scene s = parse("object { surface y + 1  bounds none }");
+    EXPECT_EQ(placed_objects(s).at(0).object().bounds.kind, Bounds::Kind::None);
+}
+
 TEST(SceneNodes, Errors) {
     EXPECT_EQ(error_of(std::string(unit_ball) + " scale 0 }"),
               "scene.zs:1:82: a scale of 0 would flatten the object; scale by nonzero factors (negative mirrors)");

@@ -243,7 +243,7 @@ TEST(SceneParser, BoundsChecks) {
     EXPECT_EQ(error_of("object { surface x  bounds sphere((0, 0, 0), -2) }"),
               "scene.zs:1:46: sphere radius must be positive, but it is -2");
     EXPECT_EQ(error_of("object { surface x  bounds cube(1) }"),
-              "scene.zs:1:28: expected box(lo, hi) or sphere(center, radius) but found 'cube'");
+              "scene.zs:1:28: expected box(lo, hi), sphere(center, radius) or none but found 'cube'");
     EXPECT_EQ(error_of("object { surface x  bounds box((0, 0, 0)) }"), "scene.zs:1:41: expected ',' but found ')'");
     EXPECT_EQ(error_of("object { surface x  bounds box((0, 0, x), (1, 1, 1)) }"),
               "scene.zs:1:32: box corner lo must be a constant vector, but it depends on x");

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "zeroset/accel/trace_scratch.hpp"
 #include "zeroset/trace/choose_method.hpp"
@@ -51,6 +52,8 @@ ImplicitLeaf::ImplicitLeaf(std::size_t id, LeafDescription description)
       method_(resolve_method(description_.method, tape_)),
       settings_(settings_for_scale(box_.diagonal())) {
     settings_.polynomial_solver = description_.solver;
+    if (description_.bounds.kind == Bounds::Kind::None)
+        throw std::invalid_argument("an implicit surface needs bounds (only a plane may go without: see HalfSpace)");
     (void)make_root_finder(method_, tape_, settings_);  // throws here, not in a render thread
 }
 

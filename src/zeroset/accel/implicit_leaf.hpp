@@ -22,6 +22,7 @@
 namespace zeroset {
 
 class TraceScratch;
+class ImplicitLeaf;
 
 /// What an implicit leaf is made of.
 struct LeafDescription {
@@ -45,7 +46,7 @@ struct LeafScratch {
     std::vector<double> roots;
 };
 
-class ImplicitLeaf final : public Primitive {
+class ImplicitLeaf final : public LeafPrimitive {
 public:
     /// `id` numbers the leaf among all leaves of its tree (TraceScratch
     /// slots). Throws std::invalid_argument when the method cannot trace the
@@ -59,10 +60,10 @@ public:
     /// The unit outward normal at a boundary point, in the leaf's own space:
     /// ∇f (eq. 33) or its difference estimate (eq. 34), or the bounds'
     /// normal on a cut; the zero vector where it is undefined.
-    Vec3d local_normal(const SurfaceRef& surface, TraceScratch& scratch) const;
+    Vec3d local_normal(const SurfaceRef& surface, TraceScratch& scratch) const override;
 
     [[nodiscard]] std::size_t id() const { return id_; }
-    [[nodiscard]] const std::string& name() const { return description_.name; }
+    [[nodiscard]] const std::string& name() const override { return description_.name; }
     [[nodiscard]] Method method() const { return method_; }
     [[nodiscard]] const Tape& tape() const { return tape_; }
     [[nodiscard]] const RootFinderSettings& settings() const { return settings_; }

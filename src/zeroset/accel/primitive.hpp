@@ -12,6 +12,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "zeroset/accel/surface_ref.hpp"
 #include "zeroset/math/box3.hpp"
@@ -41,6 +42,18 @@ public:
     /// increasing t: a span that starts at t_min because the ray starts
     /// inside has an Open enter, one that runs on past t_max an Open exit.
     virtual void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const = 0;
+};
+
+/// A primitive that owns surfaces — a leaf of the tree: an implicit leaf or
+/// a half-space. Every boundary a query reports names its leaf, which gives
+/// the normal there when the hit is shaded.
+class LeafPrimitive : public Primitive {
+public:
+    /// The unit outward normal at a boundary point, in the leaf's own space;
+    /// the zero vector where it is undefined.
+    virtual Vec3d local_normal(const SurfaceRef& surface, TraceScratch& scratch) const = 0;
+    /// For messages and statistics.
+    [[nodiscard]] virtual const std::string& name() const = 0;
 };
 
 /// True when every coordinate of the box is finite.

@@ -1,5 +1,5 @@
 // What a ray query over primitives returns: where the ray meets a boundary of
-// a solid (a Hit), which implicit leaf owns that boundary and how to find its
+// a solid (a Hit), which leaf primitive owns that boundary and how to find its
 // normal later (a SurfaceRef), and the parts of the ray inside a solid (Roth's
 // span lists, survey §7). Normals are computed only for the hit that is
 // shaded, so a SurfaceRef keeps what that needs: the point in the leaf's own
@@ -14,7 +14,7 @@
 
 namespace zeroset {
 
-class ImplicitLeaf;
+class LeafPrimitive;
 
 /// An index into the scene's table of materials; no_material: none given.
 using MaterialId = std::int32_t;
@@ -27,7 +27,7 @@ enum class BoundaryKind : std::uint8_t {
 };
 
 struct SurfaceRef {
-    const ImplicitLeaf* leaf = nullptr;  // null only for BoundaryKind::Open
+    const LeafPrimitive* leaf = nullptr;  // null only for BoundaryKind::Open
     BoundaryKind kind = BoundaryKind::Open;
     bool flipped = false;                // a subtracted solid's boundary: its normal points the other way
     MaterialId material = no_material;   // the innermost material given

@@ -15,6 +15,7 @@
 
 namespace zeroset {
 
+class LeafPrimitive;
 struct LeafScratch;
 
 class TraceScratch {
@@ -29,7 +30,7 @@ public:
 
     /// Where a leaf's function first evaluated to NaN.
     struct NanRecord {
-        const ImplicitLeaf* leaf;
+        const LeafPrimitive* leaf;
         Vec3d point;  // in the leaf's own space
     };
     std::optional<NanRecord> first_nan;

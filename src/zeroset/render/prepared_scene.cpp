@@ -7,6 +7,7 @@
 
 #include "zeroset/accel/csg.hpp"
 #include "zeroset/accel/group.hpp"
+#include "zeroset/accel/half_space.hpp"
 #include "zeroset/accel/instance.hpp"
 #include "zeroset/render/render_settings.hpp"
 
@@ -50,9 +51,13 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
                               around};
             around = no_material;  // the leaf's own
             try {
-                auto leaf = std::make_shared<const ImplicitLeaf>(leaves_.size(), std::move(d));
-                leaves_.push_back(leaf.get());
-                primitive = std::move(leaf);
+                if (o.bounds.kind == Bounds::Kind::None) {
+                    primitive = std::make_shared<const HalfSpace>(name, o.surface, d.material);
+                } else {
+                    auto leaf = std::make_shared<const ImplicitLeaf>(leaves_.size(), std::move(d));
+                    leaves_.push_back(leaf.get());
+                    primitive = std::move(leaf);
+                }
             } catch (const std::invalid_argument& e) {
                 throw RenderError("object '" + name + "': " + e.what());
             }

@@ -231,7 +231,11 @@ Bounds SceneParser::bounds() {
     const Token& shape = in_->peek();
     const bool is_box = shape.kind == TokenKind::Name && shape.text == "box";
     const bool is_sphere = shape.kind == TokenKind::Name && shape.text == "sphere";
-    if (!is_box && !is_sphere) in_->fail_expected("box(lo, hi) or sphere(center, radius)");
+    if (shape.kind == TokenKind::Name && shape.text == "none") {
+        in_->next();
+        return Bounds::none();
+    }
+    if (!is_box && !is_sphere) in_->fail_expected("box(lo, hi), sphere(center, radius) or none");
     in_->next();
     in_->expect(TokenKind::LeftParen);
     if (is_box) {

@@ -1,9 +1,11 @@
 // Bounds: the region an object's surface is known to lie in — a box or a
 // sphere (survey §6.1). Rays are clipped to it before root finding, and the
-// Lipschitz bound is computed over its enclosing box.
+// Lipschitz bound is computed over its enclosing box. Only a plane may have
+// none (Kind::None): no method could search an infinite span.
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "zeroset/math/box3.hpp"
@@ -11,7 +13,7 @@
 namespace zeroset {
 
 struct Bounds {
-    enum class Kind { Box, Sphere };
+    enum class Kind { Box, Sphere, None };
     Kind kind = Kind::Box;
     Box3 box{{-1, -1, -1}, {1, 1, 1}};  // Kind::Box
     Vec3d center{};                     // Kind::Sphere
@@ -30,8 +32,16 @@ struct Bounds {
         return bounds;
     }
 
+    static Bounds none() {
+        Bounds bounds;
+        bounds.kind = Kind::None;
+        return bounds;
+    }
+
     /// The smallest axis-aligned box containing the bounds.
     [[nodiscard]] Box3 enclosing_box() const {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        if (kind == Kind::None) return {{-inf, -inf, -inf}, {inf, inf, inf}};
         if (kind == Kind::Box) return box;
         const Vec3d r{radius, radius, radius};
         return {center - r, center + r};
@@ -39,6 +49,7 @@ struct Bounds {
 
     /// The part of [t_min, t_max] where the ray is inside the bounds, if any.
     [[nodiscard]] std::optional<Span> clip(const Ray& ray, double t_min, double t_max) const {
+        if (kind == Kind::None) return Span{t_min, t_max};
         if (kind == Kind::Box) return box.clip(ray, t_min, t_max);
         // |o + t·d − c|² = r²  →  a t² + 2 b t + c = 0
         const Vec3d oc = ray.origin - center;
