@@ -13,6 +13,8 @@ TEST(RenderSummary, NamesEveryFigure) {
     s.samples_per_pixel = 4;
     s.threads = 2;
     s.seconds = 1.5;
+    s.prepare_seconds = 0.25;
+    s.methods = {{"polynomial", 3}, {"plane", 1}};
     s.camera_rays = 1920000;
     s.shadow_rays = 1000;
     s.hits = 12345;
@@ -22,7 +24,8 @@ TEST(RenderSummary, NamesEveryFigure) {
     EXPECT_NE(line.find("800x600"), std::string::npos) << line;
     EXPECT_NE(line.find("4 spp"), std::string::npos) << line;
     EXPECT_NE(line.find("2 threads"), std::string::npos) << line;
-    EXPECT_NE(line.find("1.500 s"), std::string::npos) << line;
+    EXPECT_NE(line.find("1.500 s (prepare 0.250 s, trace 1.250 s)"), std::string::npos) << line;
+    EXPECT_NE(line.find("objects: polynomial 3, plane 1"), std::string::npos) << line;
     EXPECT_NE(line.find("1921000 rays"), std::string::npos) << line;
     EXPECT_NE(line.find("12345 hits"), std::string::npos) << line;
     EXPECT_NE(line.find("50.0M evaluations"), std::string::npos) << line;

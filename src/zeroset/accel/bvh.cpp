@@ -3,6 +3,8 @@
 #include "zeroset/accel/bvh.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <future>
 #include <memory>
 #include <thread>
@@ -24,6 +26,16 @@ struct Item {
 
 Box3 empty_box() { return {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}}; }
 Box3 unite(const Box3& a, const Box3& b) { return {min(a.lo, b.lo), max(a.hi, b.hi)}; }
+/// The float nearest below (above) a double: boxes stored in floats still contain what they bound.
+float round_down(double v) {
+    const auto f = static_cast<float>(v);
+    return static_cast<double>(f) <= v ? f : std::nextafter(f, -std::numeric_limits<float>::infinity());
+}
+float round_up(double v) {
+    const auto f = static_cast<float>(v);
+    return static_cast<double>(f) >= v ? f : std::nextafter(f, std::numeric_limits<float>::infinity());
+}
+
 double half_area(const Box3& b) {
     if (!b.valid()) return 0.0;
     const Vec3d s = b.size();
@@ -143,18 +155,31 @@ Bvh::Bvh(std::span<const Box3> boxes, int threads) {
     const std::unique_ptr<BuildNode> root = build(items, 0, 0, thread_count - 1);
     order_.resize(items.size());
     for (std::size_t i = 0; i < items.size(); ++i) order_[i] = items[i].index;
-    nodes_.reserve(2 * items.size());
-    flatten(*root, 1);
+    nodes_.reserve(items.size());
+    root_box_ = root->box;
+    root_ = child_of(*root, 1);
 }
 
-void Bvh::flatten(const BuildNode& node, std::size_t depth) {
+Bvh::Child Bvh::child_of(const BuildNode& node, std::size_t depth) {
     depth_ = std::max(depth_, depth);
-    const std::size_t index = nodes_.size();
-    nodes_.push_back({node.box, static_cast<std::uint32_t>(node.first), static_cast<std::uint32_t>(node.count)});
-    if (node.count > 0) return;
-    flatten(*node.left, depth + 1);
-    nodes_[index].right_or_first = static_cast<std::uint32_t>(nodes_.size());
-    flatten(*node.right, depth + 1);
+    if (node.count > 0) return {static_cast<std::uint32_t>(node.first), static_cast<std::uint32_t>(node.count)};
+    return {flatten(node, depth), 0};
+}
+
+std::uint32_t Bvh::flatten(const BuildNode& node, std::size_t depth) {
+    const auto index = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    const BuildNode* const children[2] = {node.left.get(), node.right.get()};
+    for (int c = 0; c < 2; ++c) {
+        Node& n = nodes_[index];  // (re)taken: the recursion below may grow nodes_
+        for (int axis = 0; axis < 3; ++axis) {
+            n.lo[axis][static_cast<std::size_t>(c)] = round_down(children[c]->box.lo[axis]);
+            n.hi[axis][static_cast<std::size_t>(c)] = round_up(children[c]->box.hi[axis]);
+        }
+        const Child child = child_of(*children[c], depth + 1);
+        nodes_[index].child[c] = child;
+    }
+    return index;
 }
 
 }  // namespace zeroset

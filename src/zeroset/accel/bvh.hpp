@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -39,67 +40,90 @@ public:
     struct BuildNode;  // the tree while it is built (bvh.cpp)
 
 private:
+    /// A child of a node: its box (floats rounded outward, so a node with
+    /// both children's boxes fits one cache line) and where it leads.
+    struct Child {
+        std::uint32_t index;  // an interior node, or the first of `count` boxes in order_
+        std::uint32_t count;  // 0 for an interior node
+    };
     struct Node {
-        Box3 box;
-        std::uint32_t right_or_first;  // interior: the right child's index (the left is next); leaf: first in order_
-        std::uint32_t count;           // 0 for an interior node
+        std::array<float, 2> lo[3];  // lo[axis][child]
+        std::array<float, 2> hi[3];
+        Child child[2];
+    };
+    /// What a traversal needs of its ray: origin and 1/x_d, with a zero
+    /// component's inverse huge but finite, so 0 · (1/x_d) is never NaN.
+    struct RayInverse {
+        Vec3d origin;
+        Vec3d inverse;
     };
 
-    /// Where the ray is inside the box within [t_min, t_max], as an entry t, or +∞ if nowhere.
-    static double entry(const Box3& box, const Vec3d& origin, const Vec3d& inverse_dir, double t_min, double t_max);
-    void flatten(const BuildNode& node, std::size_t depth);
+    /// Where the ray enters each child of the node within [t_min, t_max]; +∞ for a child it misses.
+    static std::array<double, 2> entries(const Node& node, const RayInverse& ray, double t_min, double t_max);
+    /// Adds the node for a build node's children; returns its index.
+    std::uint32_t flatten(const BuildNode& node, std::size_t depth);
+    [[nodiscard]] Child child_of(const BuildNode& node, std::size_t depth);
 
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> order_;  // box indices, leaf by leaf
+    Child root_{0, 0};                  // the whole tree: a node, or a leaf when the build made no split
+    Box3 root_box_{};
     std::size_t depth_ = 0;
 };
 
-inline double Bvh::entry(const Box3& box, const Vec3d& origin, const Vec3d& inverse_dir, double t_min, double t_max) {
+inline std::array<double, 2> Bvh::entries(const Node& node, const RayInverse& ray, double t_min, double t_max) {
+    // Both children at once, in one register of two doubles (a GCC/Clang
+    // vector extension: SSE2 on x86-64, NEON on ARM).
+    using Pair = double __attribute__((vector_size(16)));
+    Pair near = {t_min, t_min}, far = {t_max, t_max};
     for (int axis = 0; axis < 3; ++axis) {
-        // A zero direction gives ±∞, or NaN on the slab's plane; the argument
-        // order of min/max makes a NaN drop out.
-        const double a = (box.lo[axis] - origin[axis]) * inverse_dir[axis];
-        const double b = (box.hi[axis] - origin[axis]) * inverse_dir[axis];
-        const double near = std::min(b, a), far = std::max(b, a);
-        t_min = std::max(t_min, near);
-        t_max = std::min(t_max, far * (1.0 + 4e-16));  // rounding of the slab distances
-        if (t_min > t_max) return INFINITY;
+        const Pair lo = {node.lo[axis][0], node.lo[axis][1]}, hi = {node.hi[axis][0], node.hi[axis][1]};
+        const double o = ray.origin[axis], inverse = ray.inverse[axis];
+        const Pair a = (lo - o) * inverse, b = (hi - o) * inverse;
+        const Pair entry = a < b ? a : b, exit = (a < b ? b : a) * (1.0 + 4e-16);  // rounding of the slab distances
+        near = near < entry ? entry : near;
+        far = exit < far ? exit : far;
     }
-    return t_min;
+    return {near[0] <= far[0] ? near[0] : INFINITY, near[1] <= far[1] ? near[1] : INFINITY};
 }
 
 template <class Visit>
 void Bvh::traverse(const Ray& ray, double t_min, double t_max, Visit&& visit) const {
-    if (nodes_.empty()) return;
-    const Vec3d inverse_dir{1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z};
+    if (order_.empty()) return;
+    const auto root_span = root_box_.clip(ray, t_min, t_max);
+    if (!root_span) return;
+    if (root_.count > 0) {
+        for (std::uint32_t k = 0; k < root_.count && t_max >= t_min; ++k) t_max = visit(order_[root_.index + k], t_max);
+        return;
+    }
+    const auto inverse = [](double d) { return d != 0.0 ? 1.0 / d : std::copysign(1e300, d); };
+    const RayInverse r{ray.origin, {inverse(ray.dir.x), inverse(ray.dir.y), inverse(ray.dir.z)}};
     struct Pending {
         std::uint32_t node;
         double t_enter;
     };
     std::array<Pending, max_depth + 1> stack;
     std::size_t size = 0;
-    const double root = entry(nodes_[0].box, ray.origin, inverse_dir, t_min, t_max);
-    if (root != INFINITY) stack[size++] = {0, root};
+    stack[size++] = {root_.index, root_span->t0};
     while (size > 0) {
         const Pending p = stack[--size];
         if (p.t_enter > t_max) continue;
         const Node& node = nodes_[p.node];
-        if (node.count > 0) {
-            for (std::uint32_t k = 0; k < node.count && t_max >= t_min; ++k)
-                t_max = visit(order_[node.right_or_first + k], t_max);
-            if (t_max < t_min) return;
-            continue;
+        const std::array<double, 2> t = entries(node, r, t_min, t_max);
+        // The nearer child first: a leaf is visited now, an interior node
+        // goes on the stack (the nearer one on top).
+        const int first = t[1] < t[0] ? 1 : 0;
+        for (int pass = 1; pass >= 0; --pass) {  // the farther interior child is pushed first
+            const int c = pass == 1 ? 1 - first : first;
+            if (t[c] == INFINITY || node.child[c].count > 0) continue;
+            stack[size++] = {node.child[c].index, t[c]};
         }
-        const std::uint32_t left = p.node + 1, right = node.right_or_first;
-        const double tl = entry(nodes_[left].box, ray.origin, inverse_dir, t_min, t_max);
-        const double tr = entry(nodes_[right].box, ray.origin, inverse_dir, t_min, t_max);
-        // The nearer child goes on top.
-        if (tl <= tr) {
-            if (tr != INFINITY) stack[size++] = {right, tr};
-            if (tl != INFINITY) stack[size++] = {left, tl};
-        } else {
-            if (tl != INFINITY) stack[size++] = {left, tl};
-            stack[size++] = {right, tr};
+        for (int pass = 0; pass < 2; ++pass) {
+            const int c = pass == 0 ? first : 1 - first;
+            const Child& leaf = node.child[c];
+            if (leaf.count == 0 || t[c] > t_max) continue;
+            for (std::uint32_t k = 0; k < leaf.count && t_max >= t_min; ++k) t_max = visit(order_[leaf.index + k], t_max);
+            if (t_max < t_min) return;
         }
     }
 }

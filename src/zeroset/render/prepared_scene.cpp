@@ -3,6 +3,7 @@
 // a material on a node an instance around its primitive.
 #include "zeroset/render/prepared_scene.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "zeroset/accel/csg.hpp"
@@ -25,6 +26,16 @@ PreparedScene::PreparedScene(const Scene& scene, const ObjectOverrides& override
 
 const Material& PreparedScene::material(MaterialId id) const {
     return id == no_material ? default_material_ : materials_.at(static_cast<std::size_t>(id));
+}
+
+std::vector<std::pair<std::string, int>> PreparedScene::method_counts() const {
+    std::vector<std::pair<std::string, int>> counts;
+    for (const Method m : all_methods()) {
+        const auto n = std::ranges::count_if(leaves_, [m](const ImplicitLeaf* leaf) { return leaf->method() == m; });
+        if (n > 0) counts.emplace_back(std::string(method_name(m)), static_cast<int>(n));
+    }
+    if (planes_ > 0) counts.emplace_back("plane", planes_);
+    return counts;
 }
 
 MaterialId PreparedScene::material_id(const std::optional<Material>& material) {
@@ -53,6 +64,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             try {
                 if (o.bounds.kind == Bounds::Kind::None) {
                     primitive = std::make_shared<const HalfSpace>(name, o.surface, d.material);
+                    ++planes_;
                 } else {
                     auto leaf = std::make_shared<const ImplicitLeaf>(leaves_.size(), std::move(d));
                     leaves_.push_back(leaf.get());

@@ -36,6 +36,8 @@ public:
     [[nodiscard]] const std::vector<const ImplicitLeaf*>& leaves() const { return leaves_; }
     /// The material of a hit (the default one for no_material).
     [[nodiscard]] const Material& material(MaterialId id) const;
+    /// How many distinct objects each method traces ("plane" for half-spaces), in the order of all_methods().
+    [[nodiscard]] std::vector<std::pair<std::string, int>> method_counts() const;
     /// The scene's lights, or — when it has none — one white point light at the camera.
     [[nodiscard]] const std::vector<Light>& lights() const { return lights_; }
 
@@ -49,6 +51,7 @@ private:
     std::vector<Material> materials_;
     Material default_material_;
     std::vector<const ImplicitLeaf*> leaves_;
+    int planes_ = 0;
     std::unordered_map<const SceneNode*, std::shared_ptr<const Primitive>> prepared_;  // by node, for sharing
     std::shared_ptr<const Primitive> root_;
 };

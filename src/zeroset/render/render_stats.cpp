@@ -17,14 +17,21 @@ std::string count(std::uint64_t n) {
 std::string summary_line(const RenderStats& s) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer,
-                  "%dx%d, %d spp, %d thread%s: %.3f s; %s rays (%s camera, %s shadow), %s hits; "
-                  "%s evaluations (%s point, %s interval, %s gradient)",
+                  "%dx%d, %d spp, %d thread%s: %.3f s (prepare %.3f s, trace %.3f s); %s rays (%s camera, %s shadow), "
+                  "%s hits; %s evaluations (%s point, %s interval, %s gradient)",
                   s.width, s.height, s.samples_per_pixel, s.threads, s.threads == 1 ? "" : "s", s.seconds,
+                  s.prepare_seconds, s.seconds - s.prepare_seconds,
                   count(s.camera_rays + s.shadow_rays).c_str(), count(s.camera_rays).c_str(),
                   count(s.shadow_rays).c_str(), count(s.hits).c_str(),
                   count(s.counters.evaluations()).c_str(), count(s.counters.point_evaluations).c_str(),
                   count(s.counters.interval_evaluations).c_str(), count(s.counters.gradient_evaluations).c_str());
-    return buffer;
+    std::string line = buffer;
+    if (!s.methods.empty()) {
+        line += "; objects:";
+        for (std::size_t i = 0; i < s.methods.size(); ++i)
+            line += (i == 0 ? " " : ", ") + s.methods[i].first + " " + std::to_string(s.methods[i].second);
+    }
+    return line;
 }
 
 }  // namespace zeroset

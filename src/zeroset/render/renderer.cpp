@@ -94,6 +94,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
 
     const PreparedScene prepared(scene, {settings.method, settings.solver, settings.normals});
     const CameraRays camera(scene.camera, settings.width, settings.height);
+    const double prepare_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::vector<Tile> tiles = make_tiles(settings.width, settings.height);
     const int thread_count = settings.threads > 0
                                  ? settings.threads
@@ -136,6 +137,8 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     stats.samples_per_pixel = settings.samples_per_pixel;
     stats.threads = thread_count;
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.prepare_seconds = prepare_seconds;
+    stats.methods = prepared.method_counts();
     return result;
 }
 
