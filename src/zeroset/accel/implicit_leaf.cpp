@@ -135,8 +135,9 @@ void ImplicitLeaf::spans(const Ray& ray, double t_min, double t_max, TraceScratc
 }
 
 double ImplicitLeaf::normal_step() const {
-    // Where the normal study (docs/rendering.md#normals) puts the least error.
-    const double relative = description_.normals == NormalMode::CentralDifference ? 1e-5 : 1e-7;
+    const double relative = description_.normal_step > 0.0                               ? description_.normal_step
+                            : description_.normals == NormalMode::CentralDifference ? 1e-6
+                                                                                    : 3e-9;
     return relative * box_.diagonal();
 }
 

@@ -32,6 +32,9 @@ struct LeafDescription {
     Method method = Method::Auto;  // Auto is resolved by choose_method
     PolynomialSolver solver = PolynomialSolver::Fast;
     NormalMode normals = NormalMode::Analytic;
+    /// The difference normals' step relative to the bounds' diagonal; 0:
+    /// the default of the mode (normal_step()).
+    double normal_step = 0.0;
     MaterialId material = no_material;
 };
 
@@ -68,7 +71,11 @@ public:
     [[nodiscard]] const Tape& tape() const { return tape_; }
     [[nodiscard]] const RootFinderSettings& settings() const { return settings_; }
     [[nodiscard]] const LeafDescription& description() const { return description_; }
-    /// The step of the difference normals, a length in the leaf's space.
+    /// The step of the difference normals, a length in the leaf's space:
+    /// 3e-9 × scale for forward and 1e-6 × scale for central differences
+    /// unless the description gives one — where the normal study
+    /// (tests/accel/normals_test.cpp, docs/rendering.md#normals) finds the
+    /// least error.
     [[nodiscard]] double normal_step() const;
 
 private:

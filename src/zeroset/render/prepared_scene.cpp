@@ -53,13 +53,14 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
         case SceneNode::Kind::Object: {
             const Object& o = node->object;
             const std::string name = node->name.empty() ? "#" + std::to_string(leaves_.size() + 1) : node->name;
-            LeafDescription d{name,
-                              o.surface,
-                              o.bounds,
-                              overrides_.method.value_or(o.method),
-                              overrides_.solver.value_or(o.solver),
-                              overrides_.normals.value_or(o.normals),
-                              around};
+            LeafDescription d;
+            d.name = name;
+            d.surface = o.surface;
+            d.bounds = o.bounds;
+            d.method = overrides_.method.value_or(o.method);
+            d.solver = overrides_.solver.value_or(o.solver);
+            d.normals = overrides_.normals.value_or(o.normals);
+            d.material = around;
             around = no_material;  // the leaf's own
             try {
                 if (o.bounds.kind == Bounds::Kind::None) {
