@@ -17,7 +17,7 @@ Expr smoothstep(const Expr& e0, const Expr& e1, const Expr& a) {
 }
 
 Expr smooth_union(const Expr& a, const Expr& b, double k) {
-    if (!(k > 0.0)) throw std::invalid_argument("smooth_union: the blend radius k must be positive");
+    if (!(k > 0.0)) throw std::invalid_argument("the blend radius k must be positive");
     return min(a, b) - square(max(k - abs(a - b), 0.0)) / (4.0 * k);
 }
 
