@@ -54,11 +54,15 @@ bool proven_positive(Evaluator<Interval>& f, const Box3& region, int depth) {
     const Vec3d mid = region.center();
     for (int octant = 0; octant < 8; ++octant) {
         Vec3d lo = region.lo, hi = region.hi;
+        bool repeated = false;  // a flat axis splits into nothing: each part once
         for (int axis = 0; axis < 3; ++axis) {
-            if (region.lo[axis] == region.hi[axis]) continue;  // a face: keep it flat
+            if (region.lo[axis] == region.hi[axis]) {
+                repeated = repeated || (octant >> axis & 1);
+                continue;
+            }  // a face: keep it flat
             (octant >> axis & 1 ? lo : hi)[axis] = mid[axis];
         }
-        if (!proven_positive(f, {lo, hi}, depth - 1)) return false;
+        if (!repeated && !proven_positive(f, {lo, hi}, depth - 1)) return false;
     }
     return true;
 }
