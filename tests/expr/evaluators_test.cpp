@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <set>
 #include <string>
@@ -15,6 +16,7 @@
 
 #include "zeroset/expr/batch_evaluator.hpp"
 #include "zeroset/expr/evaluator.hpp"
+#include "zeroset/expr/lipschitz.hpp"
 #include "zeroset/math/box3.hpp"
 
 namespace zeroset {
@@ -63,6 +65,13 @@ std::vector<Case> cases() {
         {"pow 1031", pow(0.02 * L1 - 1.0, Expr(1031.0)), 1e-3},
         {"pow variable exponent", pow(P, L2)},
         {"pow variable, partly undefined", pow(L1, L2), 1e-2},
+        {"tan", tan(0.8 * L1)},
+        {"tan, poles inside", tan(1.5 * L1), 0.5},
+        {"atan", atan(3.0 * L1)},
+        {"atan2", atan2(L1, P)},
+        {"atan2, cut inside", atan2(L1, L2), 1e-3},
+        {"floor", floor(2.0 * L1)},
+        {"hypot", hypot(L1, L2)},
         {"min", min(L1, L2)},
         {"max", max(L1, L2)},
         // Composites: shared subexpressions, CSG, nesting.
@@ -71,6 +80,7 @@ std::vector<Case> cases() {
                     -(sqrt(square(X) + square(Y + 0.2) + square(Z)) - 0.3))},
         {"blend", 1.0 - exp(-square(X - 0.4) - square(Y) - square(Z)) - exp(-square(X + 0.4) - square(Y) - square(Z))},
         {"nested", sin(X * Y) * cos(Z - X) + log(P) / sqrt(P) - powi(L2, 3) * exp(-square(L1))},
+        {"norm", hypot(hypot(X, Y - 0.1), Z) + 0.2 * atan2(Y, X) + 0.1 * floor(3.0 * Z)},
     };
 }
 
@@ -89,8 +99,9 @@ bool close(double got, double want, double relative) {
     return std::abs(got - want) <= relative * (1.0 + std::abs(want));
 }
 
-/// The smallest |a| over abs clauses and |a − b| over min/max clauses at p:
-/// how far p is from a kink, where finite differences do not apply.
+/// How far p is from a kink or a jump, where finite differences do not
+/// apply: the smallest |a| of abs, |a − b| of min/max, distance to an
+/// integer of floor, to a pole of tan, to the cut of atan2 and to hypot's apex.
 double kink_distance(const Tape& tape, const Vec3d& p) {
     std::vector<double> s(tape.slot_count());
     for (const auto& [slot, value] : tape.constants()) s[slot] = value;
@@ -102,6 +113,11 @@ double kink_distance(const Tape& tape, const Vec3d& p) {
         const double a = s[c.a];
         if (c.op == Op::Abs) distance = std::min(distance, std::abs(a));
         if (c.op == Op::Min || c.op == Op::Max) distance = std::min(distance, std::abs(a - s[c.b]));
+        if (c.op == Op::Floor) distance = std::min(distance, std::abs(a - std::round(a)));
+        if (c.op == Op::Tan)
+            distance = std::min(distance, std::abs(std::remainder(a - std::numbers::pi / 2, std::numbers::pi)));
+        if (c.op == Op::Atan2) distance = std::min(distance, s[c.b] < 0.0 ? std::abs(a) : std::hypot(a, s[c.b]));
+        if (c.op == Op::Hypot) distance = std::min(distance, std::hypot(a, s[c.b]));
         s[c.out] = apply_op<double>(c.op, a, c.op == Op::Powi ? a : s[c.b], static_cast<int>(c.b));
     }
     return distance;
@@ -438,6 +454,32 @@ TEST(Evaluators, DomainEdges) {
     EXPECT_TRUE(std::isnan(e(-1, 0, 0)));
     Evaluator<Dual<double>> ed(root);
     EXPECT_TRUE(std::isnan(evaluate_gradient(ed, {-1, 0, 0}).v));
+}
+
+// Across a jump of floor, tan or atan2 no finite slope bounds f: the
+// Lipschitz bound over a box holding one is infinite, elsewhere finite; hypot
+// keeps a norm's bound finite even at its apex, where √(x² + y² + z²) cannot.
+TEST(Evaluators, LipschitzBoundsAcrossJumpsAndAtTheApex) {
+    const auto bound = [](const Expr& f, const Box3& box) {
+        const Tape tape(f);
+        Evaluator<Dual<Interval>> eval(tape);
+        return lipschitz_bound(eval, box).constant;
+    };
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const Box3 across{{0.9, -0.1, -0.1}, {1.1, 0.1, 0.1}}, clear{{0.2, 0.2, 0.2}, {0.8, 0.8, 0.8}};
+    EXPECT_EQ(bound(floor(X) + Y, across), inf);
+    EXPECT_LT(bound(floor(X) + Y, clear), 1.0 + 1e-12);
+    EXPECT_EQ(bound(tan(X + 0.6), across), inf);  // π/2 − 0.6 ∈ [0.9, 1.1]
+    EXPECT_TRUE(std::isfinite(bound(tan(X + 0.6), clear)));
+    EXPECT_EQ(bound(atan2(Y, X - 1.5), across), inf);  // the cut y = 0, x < 1.5
+    EXPECT_LT(bound(atan2(Y, X - 1.5), clear), 4.0);
+    const Box3 apex{{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}};
+    EXPECT_LE(bound(hypot(hypot(X, Y), Z), apex), std::sqrt(3.0) * (1 + 1e-12));
+    EXPECT_EQ(bound(sqrt(square(X) + square(Y) + square(Z)), apex), inf);
+    // And the point gradient of a norm at its apex is a subgradient, not 0/0.
+    const Tape norm(hypot(hypot(X, Y), Z));
+    Evaluator<Dual<double>> eval(norm);
+    EXPECT_EQ(evaluate_gradient(eval, {0, 0, 0}).g, (Vec3d{0, 0, 0}));
 }
 
 TEST(Evaluators, PowiWithLargeAndNegativeExponents) {

@@ -51,6 +51,12 @@ TEST(Expr, ConstantFolding) {
     EXPECT_EQ(min(Expr(1.0), Expr(-1.0)).value(), -1.0);
     EXPECT_DOUBLE_EQ(exp(Expr(1.0)).value(), std::exp(1.0));
     EXPECT_EQ(pow(Expr(4.0), Expr(0.5)).value(), 2.0);
+    EXPECT_EQ(floor(Expr(-1.5)).value(), -2.0);
+    EXPECT_EQ(ceil(Expr(-1.5)).value(), -1.0);
+    EXPECT_EQ(hypot(Expr(3.0), Expr(4.0)).value(), 5.0);
+    EXPECT_DOUBLE_EQ(atan2(Expr(1.0), Expr(-1.0)).value(), 3 * std::atan(1.0));
+    EXPECT_DOUBLE_EQ(tan(Expr(0.5)).value(), std::tan(0.5));
+    EXPECT_DOUBLE_EQ(atan(Expr(2.0)).value(), std::atan(2.0));
     // Folding nests: the whole subtree collapses to one node.
     const Expr c = sin(Expr(0.5)) * cos(Expr(0.5)) + square(Expr(3.0));
     ASSERT_TRUE(c.is_constant());
@@ -99,6 +105,11 @@ TEST(Expr, OperandsAndPrinting) {
     EXPECT_EQ(f.to_string(), "(sin(x) / (y - 2))");
     EXPECT_EQ(powi(Z, 3).to_string(), "z^3");
     EXPECT_EQ(max(X, Y).to_string().substr(0, 4), "max(");
+    EXPECT_EQ(atan2(Y, X).to_string(), "atan2(y, x)");  // C's order: y first
+    EXPECT_EQ(floor(tan(X)).to_string(), "floor(tan(x))");
+    EXPECT_EQ(ceil(X).to_string(), "-floor(-x)");
+    EXPECT_EQ(atan(X).to_string(), "atan(x)");
+    EXPECT_EQ(hypot(X, Y).id(), hypot(Y, X).id());  // commutative: one node
 }
 
 TEST(Expr, OpTableNames) {

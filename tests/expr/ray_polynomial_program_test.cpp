@@ -88,7 +88,8 @@ TEST(RayPolynomialProgram, CentringGivesTheSamePolynomialShifted) {
 
 TEST(RayPolynomialProgram, RefusesWhatIsNotAPolynomial) {
     using Refusal = RayPolynomialProgram::Refusal;
-    for (const Expr& f : {sqrt(square(X) + 1.0), X / Y, X / Expr(0.0), pow(X, Expr(0.5)), powi(X, -1), min(X, Y)}) {
+    for (const Expr& f : {sqrt(square(X) + 1.0), X / Y, X / Expr(0.0), pow(X, Expr(0.5)), powi(X, -1), min(X, Y),
+                          tan(X), atan(X), atan2(Y, X), floor(X), hypot(X, Y)}) {
         const auto c = RayPolynomialProgram::compile(Tape(f));
         EXPECT_FALSE(c.program);
         EXPECT_EQ(c.refusal, Refusal::NotPolynomial);
@@ -99,7 +100,8 @@ TEST(RayPolynomialProgram, RefusesWhatIsNotAPolynomial) {
 }
 
 TEST(RayPolynomialProgram, FoldsConstantsAndKeepsTheirBound) {
-    RayPolynomialProgram program = compiled(square(X) / 4.0 + pow(Y, Expr(3.0)) - sqrt(Expr(2.0)) * Z);
+    RayPolynomialProgram program =
+        compiled(square(X) / 4.0 + pow(Y, Expr(3.0)) - sqrt(Expr(2.0)) * Z + floor(Expr(2.5)) * atan(Expr(0.0)));
     EXPECT_EQ(program.degree(), 3);
     EXPECT_TRUE(program.error_known());
     program.evaluate({{0.0, 0.0, 0.0}, {2.0, 1.0, 1.0}}, 0.0);

@@ -203,6 +203,7 @@ TEST(Tape, IsPolynomial) {
     EXPECT_FALSE(Tape(sqrt(X)).is_polynomial());
     EXPECT_FALSE(Tape(min(X, Y)).is_polynomial());
     EXPECT_FALSE(Tape(abs(X)).is_polynomial());
+    for (const Expr& f : {tan(X), atan(X), atan2(X, Y), floor(X), hypot(X, Y)}) EXPECT_FALSE(Tape(f).is_polynomial());
 }
 
 }  // namespace

@@ -176,5 +176,40 @@ TEST(VmImport, LastClauseIsTheOutput) {
     EXPECT_EQ(eval(3, 4, 0), 12.0);
 }
 
+// fidget's trigonometry, rounding and remainder opcodes: those of the op
+// table by name, the others built from ops with fidget's meaning (round half
+// away from 0, mod as Rust's rem_euclid, in [0, |b|)).
+TEST(VmImport, FidgetRoundingAndTrigonometry) {
+    const auto at = [&](const std::string& name, double x, double y) {
+        const Expr g = parse("x var-x\ny var-y\n" + std::string("o ") + name + "\n");
+        const Tape tape(g);
+        Evaluator<double> eval(tape);
+        return eval(x, y, 0.0);
+    };
+    for (const double x : {-2.5, -1.5, -0.5, -0.3, 0.0, 0.49, 0.5, 1.5, 2.7}) {
+        for (const double y : {-0.75, 0.4, 3.0}) {
+            EXPECT_DOUBLE_EQ(at("tan x", x, y), std::tan(x));
+            EXPECT_DOUBLE_EQ(at("atan y", x, y), std::atan(y));
+            EXPECT_DOUBLE_EQ(at("atan2 y x", x, y), std::atan2(y, x));
+            EXPECT_EQ(at("floor x", x, y), std::floor(x));
+            EXPECT_EQ(at("ceil x", x, y), std::ceil(x));
+            EXPECT_EQ(at("round x", x, y), std::round(x)) << x;  // C's round: half away from 0, as Rust's
+            const double rem = std::fmod(x, y) < 0 ? std::fmod(x, y) + std::abs(y) : std::fmod(x, y);
+            EXPECT_NEAR(at("mod x y", x, y), rem, 1e-15) << x << " mod " << y;
+            if (std::abs(y) <= 1) {
+                EXPECT_NEAR(at("asin y", x, y), std::asin(y), 1e-15);
+                EXPECT_NEAR(at("acos y", x, y), std::acos(y), 1e-15);
+            } else {
+                EXPECT_TRUE(std::isnan(at("asin y", x, y)));
+            }
+        }
+    }
+    // fidget's other opcodes have no meaning here: still unknown.
+    for (const char* opcode : {"compare x y", "and x y", "or x y", "not x", "mix x y", "rand x"}) {
+        const std::string message = error_for("x var-x\ny var-y\no " + std::string(opcode) + "\n").what();
+        EXPECT_NE(message.find("unknown opcode"), std::string::npos) << opcode;
+    }
+}
+
 }  // namespace
 }  // namespace zeroset

@@ -1,6 +1,7 @@
 // Complex against std::complex (the oracle for every analytic op), against the
 // real functions on the real axis, and against the identities its principal
-// branches must keep; plus the documented branch rule of abs, min and max.
+// branches must keep; plus the documented branch rules of abs, min, max,
+// floor and atan2.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -55,6 +56,8 @@ TEST(Complex, ElementaryFunctionsAgreeWithStdComplex) {
         EXPECT_TRUE(near(exp(a), std::exp(s)));
         EXPECT_TRUE(near(sin(a), std::sin(s)));
         EXPECT_TRUE(near(cos(a), std::cos(s)));
+        EXPECT_TRUE(near(tan(a), std::tan(s)));
+        EXPECT_TRUE(near(atan(a), std::atan(s)));
         if (a.re != 0.0 || a.im != 0.0) { EXPECT_TRUE(near(log(a), std::log(s))); }
         for (const int n : {0, 1, 2, 3, 7, -1, -4}) EXPECT_TRUE(near(powi(a, n), std::pow(s, n), 1e-12)) << n;
         for (const Complex b : samples) EXPECT_TRUE(near(pow(a, b), std::pow(s, to_std(b)), 1e-12));
@@ -97,6 +100,9 @@ TEST(Complex, RealAxisAgreesWithDouble) {
         EXPECT_TRUE(near(exp(z), Complex(std::exp(x))));
         EXPECT_TRUE(near(sin(z), Complex(std::sin(x))));
         EXPECT_TRUE(near(cos(z), Complex(std::cos(x))));
+        EXPECT_TRUE(near(tan(z), Complex(std::tan(x))));
+        EXPECT_TRUE(near(atan(z), Complex(std::atan(x))));
+        EXPECT_EQ(floor(z), Complex(std::floor(x)));
         for (const int n : {0, 1, 2, 3, -2}) {
             if (x != 0.0 || n >= 0) { EXPECT_TRUE(near(powi(z, n), Complex(powi(x, n)))) << x << "^" << n; }
         }
@@ -112,6 +118,9 @@ TEST(Complex, RealAxisAgreesWithDouble) {
             if (y != 0.0) { EXPECT_TRUE(near(z / w, Complex(x / y))); }
             EXPECT_EQ(min(z, w).re, std::min(x, y));
             EXPECT_EQ(max(z, w).re, std::max(x, y));
+            EXPECT_TRUE(near(hypot(z, w), Complex(std::hypot(x, y))));
+            // atan2 continued as the angle of x + iy is the real atan2.
+            if (x != 0.0 || y != 0.0) { EXPECT_TRUE(near(atan2(w, z), Complex(std::atan2(y, x)))) << y << ", " << x; }
             const double p = std::pow(x, y);
             if (std::isfinite(p)) { EXPECT_TRUE(near(pow(z, w), Complex(p))) << x << "^" << y; }
         }
@@ -131,6 +140,21 @@ TEST(Complex, AbsMinMaxPickTheBranchByRealPart) {
     const Complex nan(std::numeric_limits<double>::quiet_NaN(), 0.0);
     EXPECT_TRUE(std::isnan(min(nan, Complex(1.0)).re));
     EXPECT_TRUE(std::isnan(max(Complex(1.0), nan).re));
+}
+
+TEST(Complex, Atan2IsTheAngleOfXPlusIY) {
+    // The continuation keeps the real identities tan(atan2(y, x)) = y/x and
+    // cos(atan2(y, x)) = x/√(x² + y²) off the real axis too.
+    for (const Complex x : samples) {
+        for (const Complex y : samples) {
+            const Complex r = hypot(x, y);
+            if (modulus(r) < 1e-3) continue;  // near the branch point x² + y² = 0
+            EXPECT_TRUE(near(tan(atan2(y, x)), y / x, 1e-11));
+            EXPECT_TRUE(near(cos(atan2(y, x)), x / r, 1e-11));
+        }
+    }
+    EXPECT_TRUE(near(atan2(Complex(0.0), Complex(-1.0)), Complex(std::numbers::pi)));
+    EXPECT_EQ(floor(Complex(2.5, -3.0)), Complex(2.0));  // ⌊Re z⌋: constant on each strip
 }
 
 TEST(Complex, IntegerValueAndExactZero) {

@@ -1,9 +1,11 @@
 // Dual and Jet: every derivative rule against its closed form, for plain
-// numbers and for intervals (the enclosure must contain the point derivative).
+// numbers and for intervals (the enclosure must contain the point derivative),
+// and unbounded derivatives where floor, tan and atan2 jump.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -66,6 +68,17 @@ std::vector<Rule> rules() {
         ZEROSET_RULE("pow 1", pow(u, N(1.0)), v, 1.0, 0.0, -1.5, 0.0, 2.0),
         ZEROSET_RULE("pow -3", pow(u, N(-3.0)), 1 / (v * v * v), -3 / (v * v * v * v), 12 / (v * v * v * v * v), -1.5,
                      0.5),
+        ZEROSET_RULE("tan", tan(u), std::tan(v), 1 + std::tan(v) * std::tan(v),
+                     2 * std::tan(v) * (1 + std::tan(v) * std::tan(v)), -1.0, 0.0, 1.2),
+        ZEROSET_RULE("atan", atan(u), std::atan(v), 1 / (1 + v * v), -2 * v / ((1 + v * v) * (1 + v * v)), -3.0, 0.0,
+                     0.8),
+        ZEROSET_RULE("atan2(u, 0.5)", atan2(u, N(0.5)), std::atan2(v, 0.5), 0.5 / (0.25 + v * v),
+                     -v / ((0.25 + v * v) * (0.25 + v * v)), -1.5, 0.0, 2.0),
+        ZEROSET_RULE("atan2(0.5, u)", atan2(N(0.5), u), std::atan2(0.5, v), -0.5 / (0.25 + v * v),
+                     v / ((0.25 + v * v) * (0.25 + v * v)), -1.5, 0.0, 2.0),
+        ZEROSET_RULE("hypot(u, 0.7)", hypot(u, N(0.7)), std::hypot(v, 0.7), v / std::hypot(v, 0.7),
+                     0.49 / std::pow(std::hypot(v, 0.7), 3), -1.5, 0.0, 2.0),
+        ZEROSET_RULE("floor", floor(u), std::floor(v), 0.0, 0.0, -1.5, 0.3, 2.7),
         ZEROSET_RULE("u*u", u * u, v * v, 2 * v, 2.0, -1.5, 0.0, 0.7),
         ZEROSET_RULE("1/u", N(1.0) / u, 1 / v, -1 / (v * v), 2 / (v * v * v), -1.5, 0.5),
         ZEROSET_RULE("min(u, 1-u)", min(u, N(1.0) - u), std::min(v, 1 - v), v < 0.5 ? 1.0 : -1.0, 0.0, -1.0, 0.2, 0.8),
@@ -172,6 +185,51 @@ TEST(Dual, KinksTakeTheHullOverAnInterval) {
     const Dual<Interval> n = max(x, Dual<Interval>(5.0));
     EXPECT_EQ(n.g.x.lo, 0.0);
     EXPECT_EQ(n.g.x.hi, 0.0);
+}
+
+// Where floor, tan or atan2 jump inside an interval argument, no derivative
+// bounds the change: the enclosures are ℝ (the Lipschitz bound of sphere
+// tracing and the monotonicity tests must not step across) — except along
+// axes in which the argument does not move.
+TEST(DualInterval, DerivativesAreUnboundedAcrossJumps) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const auto unbounded = [](const Interval& d) { return d.lo == -inf && d.hi == inf; };
+    const auto moving = [](double lo, double hi) {
+        return Dual<Interval>{Interval(lo, hi), {Interval(0.5), Interval(-2.0), Interval(0.0)}};
+    };
+    for (const Dual<Interval>& r :
+         {floor(moving(0.5, 1.5)), tan(moving(1.5, 1.6)), atan2(moving(-0.5, 0.5), Dual<Interval>(-1.0))}) {
+        EXPECT_TRUE(unbounded(r.g.x)) << "[" << r.g.x.lo << ", " << r.g.x.hi << "]";
+        EXPECT_TRUE(unbounded(r.g.y));
+        EXPECT_EQ(r.g.z.lo, 0.0);  // the argument does not move along z
+        EXPECT_EQ(r.g.z.hi, 0.0);
+    }
+    // No jump inside: the ordinary rule, bounded.
+    const Dual<Interval> calm{Interval(0.1, 0.9), {Interval(1.0), Interval(0.0), Interval(0.0)}};
+    EXPECT_EQ(floor(calm).g.x.lo, 0.0);
+    EXPECT_EQ(floor(calm).g.x.hi, 0.0);
+    EXPECT_LT(tan(calm).g.x.hi, 3.0);
+    EXPECT_LT(atan2(calm, Dual<Interval>(-1.0)).g.x.magnitude(), 1.0);  // y > 0: off the cut
+    // A plain number takes the one-sided derivative.
+    EXPECT_EQ(floor(Dual<double>::variable(2.0, 0)).g.x, 0.0);
+    EXPECT_DOUBLE_EQ(atan2(Dual<double>::variable(0.0, 0), Dual<double>(-1.0)).g.x, -1.0);
+}
+
+TEST(JetInterval, DerivativesAreUnboundedAcrossJumps) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const auto line = [](double lo, double hi) {
+        return Jet<Interval>{Interval(lo, hi), Interval(1.0), Interval(0.0)};
+    };
+    for (const Jet<Interval>& r :
+         {floor(line(0.5, 1.5)), tan(line(1.5, 1.6)), atan2(line(-0.5, 0.5), Jet<Interval>(-2.0))}) {
+        EXPECT_EQ(r.d1.lo, -inf);
+        EXPECT_EQ(r.d1.hi, inf);
+        EXPECT_EQ(r.d2.lo, -inf);
+        EXPECT_EQ(r.d2.hi, inf);
+    }
+    const Jet<Interval> still = floor(Jet<Interval>(1.5));
+    EXPECT_EQ(still.d1.hi, 0.0);
+    EXPECT_EQ(still.d2.hi, 0.0);
 }
 
 TEST(Jet, LineAndProduct) {

@@ -2,7 +2,8 @@
 // MPFR, for ops MPFI lacks) at 256 bits. For thousands of random intervals per
 // op — varied magnitudes and signs, points, intervals touching or straddling 0
 // — zeroset's result must contain the exact range, and must not be absurdly
-// wider than it.
+// wider than it. tan, atan2 and floor are tried across their poles, cut and
+// integers, where they jump.
 #include <gtest/gtest.h>
 #include <mpfi.h>
 
@@ -363,6 +364,101 @@ TEST(IntervalMpfi, TrigPeaks) {
     EXPECT_EQ(whole.hi, 1.0);
 }
 
+/// Intervals around the poles of tan (π/2 + kπ) and, as for sin, anywhere.
+TEST(IntervalMpfi, Tan) {
+    Random random(30);
+    int poles = 0;
+    for (int i = 0; i < 2 * samples; ++i) {
+        Interval a = trig_argument(random);
+        if (random.integer(0, 3) == 0) a = {a.lo + std::numbers::pi / 2, a.hi + std::numbers::pi / 2};
+        Range want;
+        mpfi_range(want, mpfi_tan, a);
+        const Interval got = tan(a);
+        const bool moderate = std::abs(a.lo) < 1e6 && std::abs(a.hi) < 1e6;
+        if (got.lo == -inf && got.hi == inf) {
+            // ℝ is right only if a pole lies in a or within the rounding margin of it.
+            ++poles;
+            const double margin = 1e-11 * (1.0 + std::abs(a.lo) + std::abs(a.hi));
+            Range widened;
+            mpfi_range(widened, mpfi_tan, {a.lo - margin, a.hi + margin});
+            ASSERT_TRUE(mpfr_inf_p(widened.lo()) || !moderate) << "tan" << show(a) << " = ℝ, but no pole is near";
+            continue;
+        }
+        ASSERT_TRUE(encloses("tan" + show(a), got, want, moderate ? Slack{1e-14, 1e-300} : no_width_check));
+    }
+    EXPECT_GT(poles, samples / 10);
+    EXPECT_EQ(tan(Interval(1.5, 1.6)).hi, inf);  // π/2 inside
+    EXPECT_LT(tan(Interval(1.5, 1.57)).hi, 1256.0);
+    EXPECT_EQ(tan(Interval(0, 4)).lo, -inf);  // wider than the gap between poles
+    EXPECT_TRUE(tan(Interval(1.0, 1.0)).contains(std::tan(1.0)));
+}
+
+TEST(IntervalMpfi, Atan) {
+    check_unary("atan", 31, 1023, mpfi_atan, [](Interval a) { return atan(a); });
+    check_unary("atan", 32, 4, mpfi_atan, [](Interval a) { return atan(a); });
+    EXPECT_GE(atan(Interval(-inf, inf)).hi, std::numbers::pi / 2);
+    EXPECT_LE(atan(Interval(-inf, inf)).hi, 1.5707963267948970);
+}
+
+/// Boxes for atan2(y, x): random, and near the cut (x < 0, y ≈ 0) and the origin.
+TEST(IntervalMpfi, Atan2) {
+    Random random(33);
+    int on_cut = 0;
+    for (int i = 0; i < 2 * samples; ++i) {
+        Interval y = random.interval(random.coin() ? 4 : 60), x = random.interval(random.coin() ? 4 : 60);
+        if (random.integer(0, 3) == 0) {  // a thin box straddling or just missing the cut
+            const double w = std::ldexp(random.unit(), -random.integer(0, 40));
+            const double c = (random.unit() - 0.5) * 4.0 * w;
+            y = {c - w, c + w};
+            x = {-x.magnitude() - 1.0, -std::min(std::abs(x.lo), std::abs(x.hi))};
+        }
+        const Interval got = atan2(y, x);
+        Range want;
+        if (y.contains(0.0) && x.lo <= 0.0) {
+            // The box meets the cut or holds the origin: a signed zero y reaches
+            // both π and −π, so the exact range (of the doubles' atan2) is [−π, π].
+            ++on_cut;
+            want.add([](mpfr_ptr r, mpfr_rnd_t rnd) { mpfr_const_pi(r, rnd); });
+            want.add([](mpfr_ptr r, mpfr_rnd_t rnd) {  // −π: π rounded the other way, negated
+                mpfr_const_pi(r, rnd == MPFR_RNDD ? MPFR_RNDU : MPFR_RNDD);
+                mpfr_neg(r, r, rnd);
+            });
+        } else {
+            mpfi_range(want, mpfi_atan2, y, x);
+        }
+        ASSERT_TRUE(encloses("atan2(" + show(y) + ", " + show(x) + ")", got, want, Slack{1e-14, 1e-300}));
+    }
+    EXPECT_GT(on_cut, samples / 4);
+    const Interval quadrant = atan2(Interval(1, 2), Interval(1, 2));  // corners atan2(1, 2) … atan2(2, 1)
+    EXPECT_LE(quadrant.lo, std::atan2(1.0, 2.0));
+    EXPECT_GE(quadrant.hi, std::atan2(2.0, 1.0));
+    EXPECT_LT(quadrant.width(), std::atan2(2.0, 1.0) - std::atan2(1.0, 2.0) + 1e-14);
+    EXPECT_LE(atan2(Interval(-1, 1), Interval(1, 2)).lo, -std::numbers::pi / 4);  // across y = 0, x > 0: no jump
+    EXPECT_GT(atan2(Interval(-1, 1), Interval(1, 2)).lo, -1.0);
+}
+
+TEST(IntervalMpfi, FloorIsExact) {
+    Random random(34);
+    for (int i = 0; i < samples; ++i) {
+        const Interval a = random.interval(random.coin() ? 3 : 1023);
+        Range want;  // floor is non-decreasing and exact in floating point: the ends floored
+        want.add([&a](mpfr_ptr r, mpfr_rnd_t) { mpfr_set_d(r, a.lo, MPFR_RNDN), mpfr_floor(r, r); });
+        want.add([&a](mpfr_ptr r, mpfr_rnd_t) { mpfr_set_d(r, a.hi, MPFR_RNDN), mpfr_floor(r, r); });
+        ASSERT_TRUE(encloses("floor" + show(a), floor(a), want, Slack{0.0}));
+        ASSERT_EQ(floor_may_jump(a), std::floor(a.lo) != std::floor(a.hi)) << show(a);
+    }
+    EXPECT_EQ(floor(Interval(-0.5, 2.5)).lo, -1.0);
+    EXPECT_EQ(floor(Interval(-0.5, 2.5)).hi, 2.0);
+    EXPECT_FALSE(floor_may_jump(Interval(2.0, 2.9)));
+    EXPECT_TRUE(floor_may_jump(Interval(1.9, 2.0)));
+}
+
+TEST(IntervalMpfi, Hypot) {
+    check_binary("hypot", 35, 60, mpfi_hypot, [](Interval a, Interval b) { return hypot(a, b); });
+    check_binary("hypot", 36, 1023, mpfi_hypot, [](Interval a, Interval b) { return hypot(a, b); });  // overflow
+    EXPECT_EQ(hypot(Interval(-1, 2), Interval(-3, 1)).lo, 0.0);
+}
+
 /// The exact range of a^n (n an integer) over a's part where it is defined.
 void powi_range(Range& want, Interval a, int n) {
     const auto at = [n](double x) {
@@ -504,7 +600,8 @@ TEST(IntervalMpfi, InfiniteEndpoints) {
 TEST(IntervalMpfi, EmptyPropagates) {
     const Interval e = Interval::empty(), a(1, 2);
     for (const Interval r : {e + a, a - e, e * a, a / e, -e, square(e), sqrt(e), abs(e), exp(e), log(e), sin(e), cos(e),
-                             powi(e, 3), pow(e, a), pow(a, e), min(e, a), max(a, e)})
+                             tan(e), atan(e), atan2(e, a), atan2(a, e), floor(e), hypot(e, a), powi(e, 3), pow(e, a),
+                             pow(a, e), min(e, a), max(a, e)})
         EXPECT_TRUE(r.is_empty()) << show(r);
     EXPECT_FALSE(e.contains(0.0));
 }

@@ -76,7 +76,8 @@ TEST(Polynomial, NonPolynomialOpsAreRefused) {
     const Polynomial two(2.0);
     for (const Polynomial& p : {sqrt(t), abs(t), exp(t), log(t), sin(t), cos(t), t / t, two / t,
                                 t / Polynomial(0.0), powi(t, -1), pow(t, Polynomial(0.5)), pow(two, t),
-                                min(t, two), max(two, t)}) {
+                                min(t, two), max(two, t), tan(t), atan(t), floor(t), atan2(t, two), atan2(two, t),
+                                hypot(t, two)}) {
         EXPECT_EQ(p.state(), State::NotPolynomial) << p.to_string();
     }
     EXPECT_EQ((sqrt(t) + t).to_string(), "not a polynomial");
@@ -89,6 +90,11 @@ TEST(Polynomial, FunctionsOfConstantsAreConstants) {
     EXPECT_EQ(powi(Polynomial(2.0), -2).to_string(), "0.25");
     EXPECT_EQ(pow(Polynomial(4.0), Polynomial(0.5)).to_string(), "2");
     EXPECT_TRUE(exp(Polynomial(0.0)).is_constant());
+    EXPECT_EQ(floor(Polynomial(-2.5)).to_string(), "-3");
+    EXPECT_EQ(hypot(Polynomial(3.0), Polynomial(4.0)).to_string(), "5");
+    EXPECT_EQ(atan2(Polynomial(0.0), Polynomial(1.0)).to_string(), "0");
+    EXPECT_EQ(tan(Polynomial(0.0)).to_string(), "0");
+    EXPECT_EQ(atan(Polynomial(0.0)).to_string(), "0");
 }
 
 }  // namespace

@@ -98,7 +98,7 @@ TEST(Expression, UnknownIdentifier) {
 }
 
 TEST(Expression, UnknownFunctionAndNonFunctions) {
-    EXPECT_EQ(error_of("object { surface tan(x) }"), "scene.zs:1:18: unknown function 'tan'");
+    EXPECT_EQ(error_of("object { surface tanh(x) }"), "scene.zs:1:18: unknown function 'tanh'");
     EXPECT_EQ(error_of("let f = x\nobject { surface f(1) }"), "scene.zs:2:18: 'f' is not a function");
     EXPECT_EQ(error_of("object { surface x(1) }"), "scene.zs:1:18: 'x' is not a function");
     EXPECT_EQ(error_of("object { surface sqrt + 1 }"), "scene.zs:1:18: 'sqrt' is a function: call it as sqrt(...)");

@@ -244,6 +244,77 @@ bool MpfiRayFunction::apply(std::size_t i, mpfi_srcptr t, bool with_derivative) 
                 mpfi_mul(s, t0, da);
             }
             return true;
+        case Op::Tan:
+            // MPFI answers ℝ over a pole; the jump makes the interval irregular.
+            mpfi_tan(v, a);
+            if (!mpfi_bounded_p(v)) clipped_ = true;
+            if (with_derivative) {  // tan′ = 1 + tan²
+                mpfi_sqr(t0, v);
+                mpfi_add_ui(t0, t0, 1);
+                mpfi_mul(s, t0, da);
+            }
+            return true;
+        case Op::Atan:
+            mpfi_atan(v, a);
+            if (with_derivative) {  // atan′ = 1/(1 + a²)
+                mpfi_sqr(t0, a);
+                mpfi_add_ui(t0, t0, 1);
+                mpfi_div(s, da, t0);
+            }
+            return true;
+        case Op::Atan2: {
+            // a is y, b is x. Over the cut (x ≤ 0, y ∋ 0) or the origin the
+            // angle jumps between −π and π: [−π, π], irregular.
+            const bool jumps = mpfi_has_zero(a) && mpfr_sgn(lo(b)) <= 0;
+            if (jumps) {
+                mpfi_const_pi(t0);
+                mpfr_neg(lo(v), hi(t0), MPFR_RNDD);
+                mpfr_set(hi(v), hi(t0), MPFR_RNDU);
+                clipped_ = true;
+            } else {
+                mpfi_atan2(v, a, b);
+            }
+            if (with_derivative) {  // (x y′ − y x′)/(x² + y²)
+                mpfi_mul(t0, b, da);
+                mpfi_mul(t1, a, db);
+                mpfi_sub(t0, t0, t1);
+                mpfi_sqr(t1, a);
+                mpfi_sqr(t2, b);
+                mpfi_add(t1, t1, t2);
+                mpfi_div(s, t0, t1);
+                if (jumps) set_entire(s);
+            }
+            return true;
+        }
+        case Op::Floor: {
+            mpfr_floor(lo(v), lo(a));
+            mpfr_floor(hi(v), hi(a));
+            const bool jumps = !mpfr_equal_p(lo(v), hi(v));
+            if (jumps) clipped_ = true;
+            if (with_derivative) {
+                mpfi_set_si(s, 0);
+                if (jumps) set_entire(s);
+            }
+            return true;
+        }
+        case Op::Hypot:
+            mpfi_hypot(v, a, b);
+            if (with_derivative) {  // (a a′ + b b′)/h, each slope a/h, b/h in [−1, 1]
+                if (mpfr_sgn(lo(v)) > 0) {
+                    mpfi_div(t0, a, v);
+                    mpfi_mul(t0, t0, da);
+                    mpfi_div(t1, b, v);
+                    mpfi_mul(t1, t1, db);
+                    mpfi_add(s, t0, t1);
+                } else {  // the apex may be inside: every slope in [−1, 1]
+                    mpfi_interv_si(t2, -1, 1);
+                    mpfi_mul(t0, t2, da);
+                    mpfi_mul(t1, t2, db);
+                    mpfi_add(s, t0, t1);
+                    clipped_ = true;
+                }
+            }
+            return true;
         case Op::Powi:
         case Op::Pow: {
             long n = node.n;

@@ -15,7 +15,10 @@
 // node above it — undefined over the interval (NaN is never a root). An
 // enclosure is `regular` when every op met its argument inside the open set
 // where it is continuous and differentiable (no clipping, no divisor or
-// negative power near 0): only then are H continuous and H′ meaningful.
+// negative power near 0, no pole of tan, no integer inside floor's argument,
+// no point of atan2's cut x ≤ 0, y = 0, no apex of hypot): only then are H
+// continuous and H′ meaningful. Across a jump H′ is ℝ, and atan2 over its
+// cut is [−π, π], as zeroset's Interval makes it.
 #pragma once
 
 #include <mpfi.h>

@@ -1,7 +1,7 @@
 // The first-hit oracle itself, on functions whose roots are known in closed
 // form: every op of the op table, roots at the span's ends, tangent and
-// triple roots, kinks, poles, undefined stretches and near misses. The ray
-// suite's references are only as good as this.
+// triple roots, kinks, poles, jumps, undefined stretches and near misses.
+// The ray suite's references are only as good as this.
 #include "support/mpfi_ray_oracle.hpp"
 
 #include <gtest/gtest.h>
@@ -43,6 +43,11 @@ TEST(MpfiRayOracle, FindsTheFirstRootThroughEveryOp) {
         {"abs", abs(x - 1.5) - 0.25, {0.0, 3.0}, 1.25},
         {"min", min(x + 1.0, 3.0 - x), {0.0, 5.0}, 3.0},
         {"max", max(1.0 - x, x - 5.0), {0.0, 6.0}, 1.0},
+        {"tan", tan(x) - 1.0, {0.0, 1.5}, std::numbers::pi / 4},
+        {"atan", atan(x) - 1.0, {0.0, 3.0}, std::tan(1.0)},
+        {"atan2", atan2(Expr(1.0), x) - std::numbers::pi / 3, {-2.0, 2.0}, 1.0 / std::sqrt(3.0)},
+        {"floor", floor(x) + x - 2.25, {0.0, 3.0}, 1.25},
+        {"hypot", hypot(x, Expr(0.6)) - 1.0, {0.0, 3.0}, 0.8},
     };
     for (const KnownRoot& c : cases) {
         MpfiRayOracle oracle(c.f, 1.0);
@@ -128,6 +133,27 @@ TEST(MpfiRayOracle, ASignChangeAcrossAPoleIsNoRoot) {
     MpfiRayOracle oracle(1.0 / (x - 2.0), 1.0);
     for (const OracleRoot& root : oracle.all_roots(along_x, {0.0, 4.0}, 10))
         EXPECT_EQ(root.kind, RootKind::Tangent) << root.t;  // 0 cannot be excluded at the pole, but nothing is proven
+}
+
+// A jump across 0 is no proven root either: floor, tan and atan2 over their
+// integers, poles and cut are irregular, so 0 there is at best a tangent.
+TEST(MpfiRayOracle, JumpsAreNoProvenRoots) {
+    const Expr y = var_y();
+    const struct {
+        std::string what;
+        Expr f;
+        Span span;
+    } jumps[] = {
+        {"floor", floor(x) - 1.5, {0.0, 3.0}},                  // −1.5, −0.5, then 0.5 from x = 2
+        {"tan", -tan(x), {1.0, 2.0}},                           // −1.6 … −∞, then +∞ … 2.2
+        {"atan2", atan2(y - 1e-3 * x, Expr(-1.0)), {-1.0, 1.0}}, // π … −π across the cut at x = 0
+    };
+    for (const auto& j : jumps) {
+        MpfiRayOracle oracle(j.f, 1.0);
+        const Ray ray{{0, 0, 0}, {1, 0, 0}};
+        for (const OracleRoot& root : oracle.all_roots(ray, j.span, 10))
+            EXPECT_EQ(root.kind, RootKind::Tangent) << j.what << " at " << root.t;
+    }
 }
 
 TEST(MpfiRayOracle, UndefinedStretchesHoldNoRoot) {

@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "zeroset/expr/functions.hpp"
+#include "zeroset/expr/shapes.hpp"
 #include "zeroset/trace/bounds.hpp"
 #include "zeroset/trace/root_finder.hpp"
 
@@ -27,6 +29,42 @@ TEST(SphereMethod, HitsTheUnitSphereAlongALongDirection) {
         ASSERT_TRUE(hit.t.has_value()) << "|x_d| = " << length;
         EXPECT_NEAR(*hit.t * length, 8.9, 1e-12) << "|x_d| = " << length;
     }
+}
+
+}  // namespace
+}  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+// Where a jump plane of mod meets a surface, an ε-segment has no finite
+// Lipschitz bound; when only its far end is inside, the crossing must still
+// be reported (it lies within the 2ε the method refines).
+TEST(SphereMethod, FindsCrossingsOnSegmentsWithoutALipschitzBound) {
+    const Expr x = var_x(), y = var_y(), z = var_z();
+    const ExprPoint cell{mod(x, Expr(1.0)) - 0.5, y, mod(z, Expr(1.0)) - 0.5};
+    const Expr f = smooth_union(sd_sphere(cell, 0.3), sd_box({x, y, z}, {3, 0.05, 3}), 0.15);
+    const Tape tape(f, SlotLayout::OnePerValue);
+    const Bounds bounds = Bounds::make_box({{-3.5, -0.5, -3.5}, {3.5, 0.5, 3.5}});
+    const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
+    int compared = 0;
+    for (int i = 0; i <= 200; ++i) {
+        // Rays from (0, 3, −6) through points along the slab's front edge.
+        const Vec3d target{-2.5 + 0.025 * i, 0.0, -3.0};
+        const Ray ray{{0, 3, -6}, normalize(target - Vec3d{0, 3, -6})};
+        const auto span = bounds.clip(ray, 0.0, INFINITY);
+        if (!span) continue;
+        RayFunction h(tape);
+        h.set_ray(ray);
+        TraceCounters counters;
+        const HitResult sphere = make_root_finder(Method::Sphere, tape, settings)->first_hit(h, *span, counters);
+        const HitResult interval = make_root_finder(Method::Interval, tape, settings)->first_hit(h, *span, counters);
+        ASSERT_EQ(sphere.t.has_value(), interval.t.has_value()) << i;
+        if (!sphere.t) continue;
+        ++compared;
+        EXPECT_NEAR(*sphere.t, *interval.t, 2.0 * settings.sphere_epsilon) << i;
+    }
+    EXPECT_GT(compared, 150);
 }
 
 }  // namespace

@@ -114,7 +114,7 @@ Expr Expr::make(Op op, const Expr& a, const Expr& b, int n) {
     }
     // Operand order does not matter for these: keep one canonical order so
     // that a + b and b + a share a node.
-    const bool commutative = op == Op::Add || op == Op::Mul || op == Op::Min || op == Op::Max;
+    const bool commutative = op == Op::Add || op == Op::Mul || op == Op::Min || op == Op::Max || op == Op::Hypot;
     if (commutative && std::less<const void*>{}(b.id(), a.id())) return intern(op, 0.0, n, &b, &a);
     return intern(op, 0.0, n, &a, arity == 2 ? &b : nullptr);
 }
@@ -191,6 +191,12 @@ Expr exp(const Expr& a) { return Expr::make(Op::Exp, a); }
 Expr log(const Expr& a) { return Expr::make(Op::Log, a); }
 Expr sin(const Expr& a) { return Expr::make(Op::Sin, a); }
 Expr cos(const Expr& a) { return Expr::make(Op::Cos, a); }
+Expr tan(const Expr& a) { return Expr::make(Op::Tan, a); }
+Expr atan(const Expr& a) { return Expr::make(Op::Atan, a); }
+Expr atan2(const Expr& y, const Expr& x) { return Expr::make(Op::Atan2, y, x); }
+Expr floor(const Expr& a) { return Expr::make(Op::Floor, a); }
+Expr hypot(const Expr& a, const Expr& b) { return Expr::make(Op::Hypot, a, b); }
+Expr ceil(const Expr& a) { return -floor(-a); }
 Expr powi(const Expr& a, int n) {
     if (n == 0) return Expr(1.0);
     if (n == 1) return a;

@@ -85,6 +85,15 @@ Expr exp(const Expr& a);
 Expr log(const Expr& a);
 Expr sin(const Expr& a);
 Expr cos(const Expr& a);
+Expr tan(const Expr& a);
+Expr atan(const Expr& a);
+/// The angle of the point (x, y) in (−π, π], as C's atan2(y, x).
+Expr atan2(const Expr& y, const Expr& x);
+Expr floor(const Expr& a);
+/// √(a² + b²), whose derivatives stay bounded where both are 0.
+Expr hypot(const Expr& a, const Expr& b);
+/// ⌈a⌉ = −⌊−a⌋ (no op of its own).
+Expr ceil(const Expr& a);
 /// a^n for an integer n (square for n = 2).
 Expr powi(const Expr& a, int n);
 /// a^b; an integral constant b becomes powi.

@@ -30,6 +30,11 @@
     X(Log, "ln", 1, log(a))                        \
     X(Sin, "sin", 1, sin(a))                       \
     X(Cos, "cos", 1, cos(a))                       \
+    X(Tan, "tan", 1, tan(a))                       \
+    X(Atan, "atan", 1, atan(a))                    \
+    X(Atan2, "atan2", 2, atan2(a, b))              \
+    X(Floor, "floor", 1, floor(a))                 \
+    X(Hypot, "hypot", 2, hypot(a, b))              \
     X(Powi, "powi", 1, powi(a, n))                 \
     X(Pow, "pow", 2, pow(a, b))                    \
     X(Min, "min", 2, min(a, b))                    \

@@ -158,7 +158,7 @@ private:
                 if (too_high(static_cast<long long>(a.degree) * *n)) return refuse(Refusal::DegreeTooHigh);
                 return power(a, *n);
             }
-            default:  // sqrt, abs, exp, log, sin, cos, min, max, and leaves (never clauses)
+            default:  // sqrt, abs, exp, log, sin, cos, tan, atan, atan2, floor, hypot, min, max; leaves are no clauses
                 if (!constants) return refuse(Refusal::NotPolynomial);
                 return folded(apply_op<double>(c.op, constant(a), constant(b), static_cast<int>(c.b)), a,
                               op_arity(c.op) == 2 ? b : SlotState{});

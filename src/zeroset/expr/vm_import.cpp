@@ -1,11 +1,17 @@
-// The .vm reader. Opcodes are looked up in the op table by their .vm names,
-// plus `recip` and `copy`, which map onto existing ops.
+// The .vm reader. Opcodes are looked up in the op table by their .vm names;
+// fidget's other opcodes that mean something here are built from ops (see
+// fidget's Context::from_text): recip, copy, ceil, round (half away from 0),
+// mod (fidget's rem_euclid, in [0, |b|)), asin and acos. The rest (compare,
+// and, or, not, mix — a hash, not GLSL's mix — and rand) stay unknown
+// opcodes.
 #include "zeroset/expr/vm_import.hpp"
 
 #include <charconv>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
+
+#include "zeroset/expr/functions.hpp"
 
 namespace zeroset {
 
@@ -27,6 +33,32 @@ std::vector<Token> split(std::string_view line) {
         tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
     }
     return tokens;
+}
+
+/// A fidget opcode written with the op table's ops.
+struct Composite {
+    std::string_view name;
+    int arity;
+    Expr (*unary)(const Expr&);
+    Expr (*binary)(const Expr&, const Expr&);
+};
+
+// round(a) = sign(a)·⌊|a| + ½⌋, the sign as a / max(|a|, ¼) (exactly ±1 where
+// the rounded magnitude is not 0); asin and acos through atan2 keep their
+// domain: √((1 − a)(1 + a)) is NaN for |a| > 1.
+constexpr Composite composites[] = {
+    {"ceil", 1, [](const Expr& a) { return ceil(a); }, nullptr},
+    {"round", 1, [](const Expr& a) { return floor(abs(a) + 0.5) * (a / max(abs(a), Expr(0.25))); },
+     nullptr},
+    {"asin", 1, [](const Expr& a) { return atan2(a, sqrt((1.0 - a) * (1.0 + a))); }, nullptr},
+    {"acos", 1, [](const Expr& a) { return atan2(sqrt((1.0 - a) * (1.0 + a)), a); }, nullptr},
+    {"mod", 2, nullptr, [](const Expr& a, const Expr& b) { return mod(a, abs(b)); }},
+};
+
+const Composite* composite_opcode(std::string_view name) {
+    for (const Composite& c : composites)
+        if (c.name == name) return &c;
+    return nullptr;
 }
 
 }  // namespace
@@ -78,6 +110,10 @@ Expr import_vm(std::istream& in) {
         } else if (opcode == "copy") {
             expect_count(1);
             value = operand(2);
+        } else if (const auto composite = composite_opcode(opcode)) {
+            expect_count(static_cast<std::size_t>(composite->arity));
+            const Expr a = operand(2);
+            value = composite->arity == 1 ? composite->unary(a) : composite->binary(a, operand(3));
         } else if (const auto op = op_from_name(opcode); op && op != Op::Powi && op != Op::Const) {
             const int arity = op_arity(*op);
             expect_count(static_cast<std::size_t>(arity));

@@ -5,18 +5,26 @@
 // and Evaluator<Jet<Complex>> (render/newton_basins.hpp).
 //
 // Every analytic op is its principal-branch continuation: sqrt, log and pow
-// (non-integral exponent) are cut along the negative real axis, as in
-// std::complex. abs, min and max have no analytic continuation; they pick a
-// branch by real parts, which agrees with the real functions on the real axis
-// and is analytic away from the switching line:
+// (non-integral exponent) are cut along the negative real axis, tan has its
+// poles at π/2 + kπ and atan its cuts on the imaginary axis beyond ±i, as in
+// std::complex. atan2 is continued as the angle of x + iy,
+//   atan2(y, x) = −i log((x + iy) / √(x² + y²)),
+// which is the real atan2 for real x, y (cut where x + iy is a negative real)
+// and has the real rule's derivatives (x dy − y dx)/(x² + y²); hypot(a, b)
+// is √(a² + b²). abs, min, max
+// and floor have no analytic continuation; they pick a branch by real parts,
+// which agrees with the real functions on the real axis and is analytic away
+// from the switching lines:
 //   abs(z)    = z if Re z ≥ 0, else −z   (√(z²) on the principal branch,
 //                                        with z itself on the imaginary axis)
 //   min(a, b) = a if Re a ≤ Re b, else b   (max likewise)
+//   floor(z)  = ⌊Re z⌋, a real constant on each strip k ≤ Re z < k + 1
 // A NaN operand of min/max propagates, as for plain numbers.
 #pragma once
 
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <optional>
 
 #include "zeroset/math/jet.hpp"
@@ -62,6 +70,19 @@ inline Complex exp(Complex a) { return detail::from_std(std::exp(detail::to_std(
 inline Complex log(Complex a) { return detail::from_std(std::log(detail::to_std(a))); }
 inline Complex sin(Complex a) { return detail::from_std(std::sin(detail::to_std(a))); }
 inline Complex cos(Complex a) { return detail::from_std(std::cos(detail::to_std(a))); }
+inline Complex tan(Complex a) { return detail::from_std(std::tan(detail::to_std(a))); }
+inline Complex atan(Complex a) { return detail::from_std(std::atan(detail::to_std(a))); }
+inline Complex atan2(Complex y, Complex x) {
+    const std::complex<double> i(0.0, 1.0);
+    const std::complex<double> w = detail::to_std(x) + i * detail::to_std(y);
+    const std::complex<double> r = std::sqrt(detail::to_std(square(x) + square(y)));
+    return detail::from_std(-i * std::log(w / r));
+}
+inline Complex floor(Complex a) { return Complex(std::floor(a.re)); }
+/// √(a² + b²) on the principal branch (the real hypot on the real axis).
+inline Complex hypot(Complex a, Complex b) { return sqrt(square(a) + square(b)); }
+inline Complex hypot_slope(Complex a, Complex h) { return a / h; }
+inline Complex hypot_curvature(Complex n, Complex h) { return n / h; }
 
 /// a^n by repeated squaring: exact branch-free integer powers.
 inline Complex powi(Complex a, int n) {
@@ -80,6 +101,12 @@ inline std::optional<int> integer_value(Complex a) {
     return integer_value(a.re);
 }
 inline bool is_exact_zero(Complex a) { return a.re == 0.0 && a.im == 0.0; }
+// A complex number is one point: like a double, it never straddles a jump
+// (see scalar.hpp), so Jet<Complex> takes the one-sided derivatives.
+inline bool floor_may_jump(Complex) { return false; }
+inline bool tan_may_jump(Complex) { return false; }
+inline bool atan2_may_jump(Complex, Complex) { return false; }
+inline Complex unbounded_derivative(Complex) { return Complex(std::numeric_limits<double>::infinity()); }
 
 /// a^b on the principal branch, e^(b·log a); an integral b is powi (so a
 /// negative base is fine, as for plain numbers), and a real b on a

@@ -34,6 +34,14 @@ template <class T>
 Dual<T> chain(const Dual<T>& u, T value, T dg) {
     return {value, u.g * dg};
 }
+/// A function that may jump inside the argument(s): each component of the
+/// gradient is 0 where no argument moves along that axis, else unbounded.
+template <class T>
+Dual<T> across_jump(T value, const Vec3<T>& g, const Vec3<T>& h) {
+    Vec3<T> r;
+    for (int i = 0; i < 3; ++i) r[i] = is_exact_zero(g[i]) && is_exact_zero(h[i]) ? T(0.0) : unbounded_derivative(g[i]);
+    return {value, r};
+}
 }  // namespace detail
 
 template <class T> Dual<T> operator+(const Dual<T>& a, const Dual<T>& b) { return {a.v + b.v, a.g + b.g}; }
@@ -57,6 +65,33 @@ template <class T> Dual<T> exp(const Dual<T>& a) {
 template <class T> Dual<T> log(const Dual<T>& a) { return detail::chain(a, log(a.v), T(1.0) / a.v); }
 template <class T> Dual<T> sin(const Dual<T>& a) { return detail::chain(a, sin(a.v), cos(a.v)); }
 template <class T> Dual<T> cos(const Dual<T>& a) { return detail::chain(a, cos(a.v), -sin(a.v)); }
+template <class T> Dual<T> tan(const Dual<T>& a) {
+    const T t = tan(a.v);
+    if (tan_may_jump(a.v)) return detail::across_jump(t, a.g, a.g);
+    return detail::chain(a, t, T(1.0) + square(t));
+}
+template <class T> Dual<T> atan(const Dual<T>& a) {
+    return detail::chain(a, atan(a.v), T(1.0) / (T(1.0) + square(a.v)));
+}
+/// ∇atan2(y, x) = (x ∇y − y ∇x) / (x² + y²); unbounded across the cut.
+template <class T> Dual<T> atan2(const Dual<T>& y, const Dual<T>& x) {
+    const T angle = atan2(y.v, x.v);
+    if (atan2_may_jump(y.v, x.v)) return detail::across_jump(angle, y.g, x.g);
+    const T r = T(1.0) / (square(x.v) + square(y.v));
+    return {angle, (y.g * x.v - x.g * y.v) * r};
+}
+/// ∇hypot(a, b) = (a ∇a + b ∇b)/h, with the slopes a/h, b/h enclosed in
+/// [−1, 1] even where h may be 0: a norm stays 1-Lipschitz.
+template <class T> Dual<T> hypot(const Dual<T>& a, const Dual<T>& b) {
+    const T h = hypot(a.v, b.v);
+    return {h, a.g * hypot_slope(a.v, h) + b.g * hypot_slope(b.v, h)};
+}
+/// floor′ = 0 between the integers; unbounded where an integer may be crossed.
+template <class T> Dual<T> floor(const Dual<T>& a) {
+    const T f = floor(a.v);
+    if (floor_may_jump(a.v)) return detail::across_jump(f, a.g, a.g);
+    return {f, {T(0.0), T(0.0), T(0.0)}};
+}
 template <class T> Dual<T> powi(const Dual<T>& a, int n) {
     if (n == 0) return Dual<T>(1.0);
     return detail::chain(a, powi(a.v, n), T(static_cast<double>(n)) * powi(a.v, n - 1));

@@ -2,7 +2,10 @@
 // the operation (the survey's §4, eqs. 25–29). Every bound is rounded outward:
 // results are computed in round-to-nearest and then moved one or more ulps
 // away (correctly rounded ops are off by at most half an ulp; glibc's exp, log,
-// sin, cos and pow by less than two, so those move by two).
+// sin, cos, tan, atan, atan2 and pow by less than two, so those move by two).
+// tan over a pole, atan2 over its cut and floor over an integer jump: the
+// value still encloses the range, and the *_may_jump predicates tell Dual and
+// Jet that no derivative bounds the change there.
 //
 // Domains are clipped: sqrt/log/pow with a partly negative argument enclose
 // the function over the part where it is defined. An interval entirely outside
@@ -176,6 +179,92 @@ inline Interval sin(Interval a) {
 inline Interval cos(Interval a) {
     return detail::periodic_range(a, [](double v) { return std::cos(v); }, 0.0);
 }
+
+namespace detail {
+/// π rounded down and up: the double nearest π is below it.
+inline constexpr double pi_down = std::numbers::pi;
+inline constexpr double pi_up = 3.1415926535897936;  // the next double above π
+static_assert(pi_up > pi_down);
+inline constexpr double half_pi_up = pi_up / 2.0;
+
+/// True when a may hold a pole π/2 + kπ of tan, or is too wide or too far
+/// out to tell (checked with the margin periodic_range uses, so a pole
+/// missed only by rounding still counts).
+inline bool may_hold_tan_pole(Interval a) {
+    if (a.lo == a.hi) return false;  // a double is never a pole
+    if (!(a.width() < pi_down)) return true;
+    const double margin = 1e-12 * (1.0 + std::abs(a.lo) + std::abs(a.hi));
+    const double half_pi = std::numbers::pi / 2.0;
+    const double k = std::ceil((a.lo - margin - half_pi) / std::numbers::pi);
+    return half_pi + k * std::numbers::pi <= a.hi + margin;
+}
+}  // namespace detail
+
+/// tan: increasing between its poles; ℝ over an interval that may hold one.
+inline Interval tan(Interval a) {
+    if (a.is_empty()) return a;
+    if (detail::may_hold_tan_pole(a)) return Interval::entire();
+    const double lo = rounding::down2(std::tan(a.lo)), hi = rounding::up2(std::tan(a.hi));
+    if (!(lo <= hi)) return Interval::entire();  // a pole after all (cannot happen with the margin)
+    return {lo, hi};
+}
+inline bool tan_may_jump(Interval a) { return !a.is_empty() && detail::may_hold_tan_pole(a); }
+
+/// atan: increasing, within (−π/2, π/2).
+inline Interval atan(Interval a) {
+    if (a.is_empty()) return a;
+    return {std::max(-detail::half_pi_up, rounding::down2(std::atan(a.lo))),
+            std::min(detail::half_pi_up, rounding::up2(std::atan(a.hi)))};
+}
+
+/// atan2(y, x) over the box y × x. Where the box holds the origin or meets the
+/// cut (x ≤ 0, y = 0, where the angle jumps from π to −π — a signed zero
+/// picks either side) it is [−π, π]; elsewhere the angle is continuous on the
+/// box and, the box being convex and away from the origin, takes its extremes
+/// at the corners.
+inline Interval atan2(Interval y, Interval x) {
+    if (y.is_empty() || x.is_empty()) return Interval::empty();
+    if (y.contains(0.0) && x.lo <= 0.0) return {-detail::pi_up, detail::pi_up};
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const double yc : {y.lo, y.hi}) {
+        for (const double xc : {x.lo, x.hi}) {
+            const double angle = std::atan2(yc, xc);
+            lo = std::min(lo, angle);
+            hi = std::max(hi, angle);
+        }
+    }
+    return {std::max(-detail::pi_up, rounding::down2(lo)), std::min(detail::pi_up, rounding::up2(hi))};
+}
+inline bool atan2_may_jump(Interval y, Interval x) {
+    return !y.is_empty() && !x.is_empty() && y.contains(0.0) && x.lo <= 0.0;
+}
+
+/// floor is exact in floating point and non-decreasing.
+inline Interval floor(Interval a) {
+    if (a.is_empty()) return a;
+    return {std::floor(a.lo), std::floor(a.hi)};
+}
+inline bool floor_may_jump(Interval a) { return !a.is_empty() && std::floor(a.lo) != std::floor(a.hi); }
+
+/// hypot: increasing in |a| and |b|, so the range runs from the smallest
+/// magnitudes to the largest (glibc's hypot is within 1 ulp).
+inline Interval hypot(Interval a, Interval b) {
+    if (a.is_empty() || b.is_empty()) return Interval::empty();
+    const Interval ma = abs(a), mb = abs(b);
+    return {std::max(0.0, rounding::down2(std::hypot(ma.lo, mb.lo))), rounding::up2(std::hypot(ma.hi, mb.hi))};
+}
+/// a/h over the box, within [−1, 1]; where h may be 0 (a and b both straddle
+/// it) every slope of the cone at its apex is possible: [−1, 1].
+inline Interval hypot_slope(Interval a, Interval h) {
+    if (a.is_empty() || h.is_empty()) return Interval::empty();
+    if (!(h.lo > 0.0)) return {-1.0, 1.0};
+    const Interval q = a / h;
+    return {std::max(-1.0, q.lo), std::min(1.0, q.hi)};
+}
+inline Interval hypot_curvature(Interval n, Interval h) { return n / h; }
+
+/// See scalar.hpp.
+inline Interval unbounded_derivative(Interval /*like*/) { return Interval::entire(); }
 
 /// a^n for an integer n.
 inline Interval powi(Interval a, int n) {

@@ -33,6 +33,14 @@ template <class T>
 Jet<T> chain(const Jet<T>& u, T g, T g1, T g2) {
     return {g, g1 * u.d1, g2 * square(u.d1) + g1 * u.d2};
 }
+/// H′ and H″ where the function may jump inside the segment: no finite bound
+/// holds its change, unless the arguments do not move along the ray at all.
+template <class T>
+Jet<T> across_jump(T value, const Jet<T>& u, const Jet<T>& w) {
+    const bool still = is_exact_zero(u.d1) && is_exact_zero(u.d2) && is_exact_zero(w.d1) && is_exact_zero(w.d2);
+    const T d = still ? T(0.0) : unbounded_derivative(value);
+    return {value, d, d};
+}
 }  // namespace detail
 
 template <class T> Jet<T> operator+(const Jet<T>& a, const Jet<T>& b) { return {a.v + b.v, a.d1 + b.d1, a.d2 + b.d2}; }
@@ -71,6 +79,42 @@ template <class T> Jet<T> sin(const Jet<T>& a) {
 template <class T> Jet<T> cos(const Jet<T>& a) {
     const T c = cos(a.v);
     return detail::chain(a, c, -sin(a.v), -c);
+}
+/// tan′ = 1 + tan², tan″ = 2 tan (1 + tan²).
+template <class T> Jet<T> tan(const Jet<T>& a) {
+    const T t = tan(a.v);
+    if (tan_may_jump(a.v)) return detail::across_jump(t, a, a);
+    const T g1 = T(1.0) + square(t);
+    return detail::chain(a, t, g1, T(2.0) * t * g1);
+}
+/// atan′ = 1/(1 + a²), atan″ = −2a/(1 + a²)².
+template <class T> Jet<T> atan(const Jet<T>& a) {
+    const T g1 = T(1.0) / (T(1.0) + square(a.v));
+    return detail::chain(a, atan(a.v), g1, T(-2.0) * a.v * square(g1));
+}
+/// H = atan2(Y, X): with N = X Y′ − Y X′ and D = X² + Y², H′ = N/D and
+/// H″ = (N′ − H′ D′)/D, where N′ = X Y″ − Y X″ and D′ = 2(X X′ + Y Y′).
+template <class T> Jet<T> atan2(const Jet<T>& y, const Jet<T>& x) {
+    const T angle = atan2(y.v, x.v);
+    if (atan2_may_jump(y.v, x.v)) return detail::across_jump(angle, y, x);
+    const T d = square(x.v) + square(y.v);
+    const T h1 = (x.v * y.d1 - y.v * x.d1) / d;
+    const T n1 = x.v * y.d2 - y.v * x.d2;
+    const T d1 = T(2.0) * (x.v * x.d1 + y.v * y.d1);
+    return {angle, h1, (n1 - h1 * d1) / d};
+}
+/// H = hypot(A, B) with slopes α = A/H, β = B/H (α² + β² = 1):
+/// H′ = α A′ + β B′ and H″ = (α B′ − β A′)²/H + α A″ + β B″.
+template <class T> Jet<T> hypot(const Jet<T>& a, const Jet<T>& b) {
+    const T h = hypot(a.v, b.v);
+    const T alpha = hypot_slope(a.v, h), beta = hypot_slope(b.v, h);
+    const T turn = alpha * b.d1 - beta * a.d1;
+    return {h, alpha * a.d1 + beta * b.d1, hypot_curvature(square(turn), h) + alpha * a.d2 + beta * b.d2};
+}
+template <class T> Jet<T> floor(const Jet<T>& a) {
+    const T f = floor(a.v);
+    if (floor_may_jump(a.v)) return detail::across_jump(f, a, a);
+    return {f, T(0.0), T(0.0)};
 }
 template <class T> Jet<T> powi(const Jet<T>& a, int n) {
     if (n == 0) return Jet<T>(1.0);

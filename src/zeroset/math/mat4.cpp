@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 namespace zeroset {
@@ -30,14 +32,32 @@ Mat4 Mat4::scale(const Vec3d& s) {
     return r;
 }
 
-Mat4 Mat4::rotate(const Vec3d& axis, double radians) {
+namespace {
+
+/// Rodrigues' rotation about the axis, from the angle's cosine and sine.
+Mat4 rotation(const Vec3d& axis, double c, double s) {
     const Vec3d a = normalize(axis);
-    const double c = std::cos(radians), s = std::sin(radians), k = 1.0 - c;
-    Mat4 r = identity();
+    const double k = 1.0 - c;
+    Mat4 r = Mat4::identity();
     r.m[0] = {c + a.x * a.x * k, a.x * a.y * k - a.z * s, a.x * a.z * k + a.y * s, 0.0};
     r.m[1] = {a.y * a.x * k + a.z * s, c + a.y * a.y * k, a.y * a.z * k - a.x * s, 0.0};
     r.m[2] = {a.z * a.x * k - a.y * s, a.z * a.y * k + a.x * s, c + a.z * a.z * k, 0.0};
     return r;
+}
+
+}  // namespace
+
+Mat4 Mat4::rotate(const Vec3d& axis, double radians) { return rotation(axis, std::cos(radians), std::sin(radians)); }
+
+Mat4 Mat4::rotate_degrees(const Vec3d& axis, double degrees) {
+    const double turns = degrees / 90.0;
+    if (turns == std::round(turns) && std::abs(turns) < 1e15) {
+        static constexpr double cosines[] = {1, 0, -1, 0}, sines[] = {0, 1, 0, -1};
+        const auto quarter = static_cast<std::size_t>(((static_cast<long long>(turns) % 4) + 4) % 4);
+        return rotation(axis, cosines[quarter], sines[quarter]);
+    }
+    const double radians = degrees * (std::numbers::pi / 180.0);
+    return rotation(axis, std::cos(radians), std::sin(radians));
 }
 
 Mat4 Mat4::operator*(const Mat4& o) const {

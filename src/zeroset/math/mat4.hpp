@@ -18,6 +18,9 @@ struct Mat4 {
     static Mat4 scale(const Vec3d& s);
     /// Rotation by `radians` about the (normalised) `axis`, right-handed.
     static Mat4 rotate(const Vec3d& axis, double radians);
+    /// The same in degrees, with exact sines and cosines at multiples of 90°
+    /// (a quarter turn about z takes x exactly to y).
+    static Mat4 rotate_degrees(const Vec3d& axis, double degrees);
 
     [[nodiscard]] Mat4 operator*(const Mat4& o) const;
     [[nodiscard]] Mat4 transpose() const;

@@ -11,8 +11,8 @@
 // degree). A result of higher degree is never written: it becomes Overflow.
 //
 // Ops outside polynomial arithmetic (division by a non-constant, sqrt, abs,
-// exp, log, sin, cos, a non-integral or variable exponent, min, max, a
-// negative power) give NotPolynomial when an operand depends on t. On
+// exp, log, sin, cos, tan, atan, atan2, floor, hypot, a non-integral or variable
+// exponent, min, max, a negative power) give NotPolynomial when an operand depends on t. On
 // constants they are ordinary arithmetic: sqrt(2) as a radius is still a
 // constant. Invalid states are sticky through every later op.
 //
@@ -214,6 +214,15 @@ inline Polynomial exp(const Polynomial& a) { return detail::on_constant(a, [](do
 inline Polynomial log(const Polynomial& a) { return detail::on_constant(a, [](double v) { return log(v); }); }
 inline Polynomial sin(const Polynomial& a) { return detail::on_constant(a, [](double v) { return sin(v); }); }
 inline Polynomial cos(const Polynomial& a) { return detail::on_constant(a, [](double v) { return cos(v); }); }
+inline Polynomial tan(const Polynomial& a) { return detail::on_constant(a, [](double v) { return tan(v); }); }
+inline Polynomial atan(const Polynomial& a) { return detail::on_constant(a, [](double v) { return atan(v); }); }
+inline Polynomial floor(const Polynomial& a) { return detail::on_constant(a, [](double v) { return floor(v); }); }
+inline Polynomial hypot(const Polynomial& a, const Polynomial& b) {
+    return detail::on_constants(a, b, [](double u, double v) { return hypot(u, v); });
+}
+inline Polynomial atan2(const Polynomial& y, const Polynomial& x) {
+    return detail::on_constants(y, x, [](double u, double v) { return atan2(u, v); });
+}
 inline Polynomial min(const Polynomial& a, const Polynomial& b) {
     return detail::on_constants(a, b, [](double u, double v) { return min(u, v); });
 }

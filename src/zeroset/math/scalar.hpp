@@ -2,11 +2,13 @@
 // the evaluator (Interval, Dual, Jet, …) offers the same named functions, so a
 // single evaluator template serves them all (DESIGN.md, "one tape, many number
 // types"). The predicates at the end let generic code (Dual, Jet) pick a branch
-// of min/max/abs: a plain number always knows which side wins.
+// of min/max/abs, and tell where floor, tan and atan2 jump: a plain number
+// always knows which side wins, and sits on one side of every jump.
 #pragma once
 
 #include <cmath>
 #include <concepts>
+#include <limits>
 #include <optional>
 
 namespace zeroset {
@@ -18,6 +20,14 @@ template <std::floating_point F> inline F exp(F a) { return std::exp(a); }
 template <std::floating_point F> inline F log(F a) { return std::log(a); }
 template <std::floating_point F> inline F sin(F a) { return std::sin(a); }
 template <std::floating_point F> inline F cos(F a) { return std::cos(a); }
+template <std::floating_point F> inline F tan(F a) { return std::tan(a); }
+template <std::floating_point F> inline F atan(F a) { return std::atan(a); }
+/// The angle of the point (x, y), in (−π, π]; the order of the arguments is C's.
+template <std::floating_point F> inline F atan2(F y, F x) { return std::atan2(y, x); }
+template <std::floating_point F> inline F floor(F a) { return std::floor(a); }
+/// √(a² + b²) without overflow; its own op so that derivatives stay bounded
+/// at 0, where sqrt(a² + b²) would divide 0 by 0 (see dual.hpp).
+template <std::floating_point F> inline F hypot(F a, F b) { return std::hypot(a, b); }
 template <std::floating_point F> inline F pow(F a, F b) { return std::pow(a, b); }
 /// a^n for an integer n, by repeated squaring (exact sign for negative a).
 template <std::floating_point F> inline F powi(F a, int n) {
@@ -46,5 +56,23 @@ template <std::floating_point F> inline bool certainly_le(F a, F b) { return a <
 /// The smallest number that stands for both (only reached by NaN for scalars).
 template <std::floating_point F> inline F hull(F a, F /*b*/) { return a; }
 template <std::floating_point F> inline bool is_exact_zero(F a) { return a == F(0); }
+
+/// True when floor, tan or atan2 may jump somewhere in the values the numbers
+/// stand for (an integer, a pole, the cut x ≤ 0, y = 0): never for a point,
+/// whose derivative is the one-sided value.
+template <std::floating_point F> inline bool floor_may_jump(F /*a*/) { return false; }
+template <std::floating_point F> inline bool tan_may_jump(F /*a*/) { return false; }
+template <std::floating_point F> inline bool atan2_may_jump(F /*y*/, F /*x*/) { return false; }
+/// ∂hypot/∂a = a/h at h = hypot(a, b): in [−1, 1]; 0 at the origin (a
+/// subgradient there, as min/max/abs take one branch at a kink).
+template <std::floating_point F> inline F hypot_slope(F a, F h) { return h == F(0) ? F(0) : a / h; }
+/// n/h for the curvature term of hypot's second derivative, 0 at the origin.
+template <std::floating_point F> inline F hypot_curvature(F n, F h) { return h == F(0) ? F(0) : n / h; }
+/// The derivative of a function across a jump: unbounded, so that Lipschitz
+/// bounds and monotonicity tests never step over it (never reached for a
+/// plain number, which never straddles a jump).
+template <std::floating_point F> inline F unbounded_derivative(F /*like*/) {
+    return std::numeric_limits<F>::infinity();
+}
 
 }  // namespace zeroset

@@ -8,15 +8,13 @@
 //               | '(' expression ',' expression ',' expression ')'
 #include "zeroset/scene/expression_parser.hpp"
 
-#include <algorithm>
-#include <array>
 #include <numbers>
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
 #include "zeroset/scene/algebraic_surfaces.hpp"
+#include "zeroset/scene/builtin_functions.hpp"
 #include "zeroset/scene/constant_value.hpp"
 #include "zeroset/scene/file_text.hpp"
 #include "zeroset/scene/wording.hpp"
@@ -24,39 +22,6 @@
 namespace zeroset {
 
 namespace {
-
-struct Function {
-    std::string_view name;
-    int min_args;
-    int max_args;  // -1: no upper limit
-    Expr (*apply)(std::span<const Expr> args);
-};
-
-Expr fold_min(std::span<const Expr> args) {
-    Expr result = args[0];
-    for (const Expr& a : args.subspan(1)) result = min(result, a);
-    return result;
-}
-
-Expr fold_max(std::span<const Expr> args) {
-    Expr result = args[0];
-    for (const Expr& a : args.subspan(1)) result = max(result, a);
-    return result;
-}
-
-constexpr std::array<Function, 11> functions{{
-    {"sqrt", 1, 1, [](std::span<const Expr> a) { return sqrt(a[0]); }},
-    {"abs", 1, 1, [](std::span<const Expr> a) { return abs(a[0]); }},
-    {"exp", 1, 1, [](std::span<const Expr> a) { return exp(a[0]); }},
-    {"log", 1, 1, [](std::span<const Expr> a) { return log(a[0]); }},
-    {"ln", 1, 1, [](std::span<const Expr> a) { return log(a[0]); }},
-    {"sin", 1, 1, [](std::span<const Expr> a) { return sin(a[0]); }},
-    {"cos", 1, 1, [](std::span<const Expr> a) { return cos(a[0]); }},
-    {"square", 1, 1, [](std::span<const Expr> a) { return square(a[0]); }},
-    {"pow", 2, 2, [](std::span<const Expr> a) { return pow(a[0], a[1]); }},
-    {"min", 2, -1, fold_min},
-    {"max", 2, -1, fold_max},
-}};
 
 constexpr std::string_view model_function = "model";
 
@@ -67,11 +32,6 @@ std::optional<Expr> builtin_value(std::string_view name) {
     if (name == "z") return var_z();
     if (name == "pi") return Expr(std::numbers::pi);
     return std::nullopt;
-}
-
-const Function* find_function(std::string_view name) {
-    const auto it = std::ranges::find(functions, name, &Function::name);
-    return it == functions.end() ? nullptr : &*it;
 }
 
 std::string plural(std::size_t n, std::string_view word) {
@@ -156,7 +116,7 @@ private:
         const std::string_view text = token.text;
         if (const auto value = builtin_value(text)) return *value;
         if (const Binding* binding = context_.scope.find(text)) return binding->value;
-        if (find_function(text) || text == model_function || find_algebraic_surface(text))
+        if (is_builtin_function(text) || text == model_function || find_algebraic_surface(text))
             in_.fail(token.where, "'" + std::string(text) + "' is a function: call it as " + std::string(text) + "(...)");
         in_.fail(token.where, "unknown identifier '" + std::string(text) + "'");
     }
@@ -186,34 +146,22 @@ private:
     Value call(const Token& name) {
         if (name.text == model_function) return model(name);
         if (const AlgebraicSurface* surface = find_algebraic_surface(name.text)) return algebraic(name, *surface);
-        const Function* function = find_function(name.text);
-        if (!function) {
+        if (!is_builtin_function(name.text)) {
             const bool is_value = context_.scope.find(name.text) || builtin_value(name.text);
             in_.fail(name.where, is_value ? "'" + std::string(name.text) + "' is not a function"
                                           : "unknown function '" + std::string(name.text) + "'");
         }
         const Nesting nesting(*this, name);
         in_.next();  // '('
-        std::vector<Expr> args;
+        std::vector<Argument> args;
         if (!in_.accept(TokenKind::RightParen)) {
             do {
                 const SourceLocation start = in_.peek().where;
-                const Value arg = expression();
-                if (arg.is_vector())
-                    in_.fail(start, std::string(name.text) + " takes numbers, but argument " +
-                                        std::to_string(args.size() + 1) + " is a vector");
-                args.push_back(arg.number());
+                args.push_back({expression(), start});
             } while (in_.accept(TokenKind::Comma));
             if (!in_.accept(TokenKind::RightParen)) in_.fail_expected("',' or ')'");
         }
-        const auto count = static_cast<int>(args.size());
-        if (count < function->min_args || (function->max_args >= 0 && count > function->max_args)) {
-            const std::string takes = function->min_args == function->max_args ? "takes " : "takes at least ";
-            in_.fail(name.where, std::string(name.text) + " " + takes +
-                                     plural(static_cast<std::size_t>(function->min_args), "argument") + ", but " +
-                                     std::to_string(count) + (count == 1 ? " was" : " were") + " given");
-        }
-        return function->apply(args);
+        return call_builtin_function(in_, name, args);
     }
 
     /// A named algebraic surface: constant parameters, then optionally the
@@ -323,7 +271,7 @@ Value parse_expression(TokenStream& in, const ExpressionContext& context) {
 }
 
 bool is_builtin_name(std::string_view name) {
-    return builtin_value(name) || name == model_function || find_function(name) != nullptr ||
+    return builtin_value(name) || name == model_function || is_builtin_function(name) ||
            find_algebraic_surface(name) != nullptr;
 }
 

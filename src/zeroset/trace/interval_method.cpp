@@ -40,7 +40,9 @@ HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& coun
             segments.split(s, s.a);  // step 5: divide and conquer, front half first
             continue;
         }
-        if (!visit(s.a)) return HitStatus::Ok;  // still ambiguous at the finest width: a tangent root
+        // Still ambiguous at the finest width: a tangent root, or a jump.
+        if (const auto hit = finest_segment_hit(h, s.a, s.b, e.d1, counters))
+            if (!visit(*hit)) return HitStatus::Ok;
     }
     return HitStatus::NoHit;
 }

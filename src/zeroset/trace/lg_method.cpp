@@ -52,7 +52,9 @@ HitStatus LgMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, 
             segments.split(s, s.a);  // step 4: divide and conquer, front half first
             continue;
         }
-        if (!visit(s.a)) return HitStatus::Ok;  // still undecided at the finest width: a tangent root
+        // Still undecided at the finest width: a tangent root, or a jump.
+        if (const auto hit = finest_segment_hit(h, s.a, s.b, e.d1, counters))
+            if (!visit(*hit)) return HitStatus::Ok;
     }
     return HitStatus::NoHit;
 }

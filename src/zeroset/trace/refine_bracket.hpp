@@ -16,4 +16,15 @@ namespace zeroset {
 /// bracket, one of them.
 std::optional<double> refine_sign_change(RayFunction& h, double a, double b, TraceCounters& counters);
 
+/// The hit an isolating method reports for a segment [a, b] still undecided
+/// at the finest width, where `slope` encloses H′: a tangent root at a —
+/// unless no bound holds H′ there. Then H may jump (floor across an integer,
+/// mod, tan at a pole, atan2 across its cut), its enclosure need not shrink
+/// with the segment, and only a sign at the ends shows a root, as in sphere
+/// tracing's ε-segments: a if H(a) ≤ 0 or H(b) ≤ 0 (or either is NaN), else
+/// none — the root, if any, lies within the segment, reported at its left end
+/// like a tangent root.
+std::optional<double> finest_segment_hit(RayFunction& h, double a, double b, const Interval& slope,
+                                         TraceCounters& counters);
+
 }  // namespace zeroset

@@ -47,7 +47,7 @@ std::optional<double> SphereTracer::march(RayFunction& h, Span span, double side
             if (fa <= 0.0) return a;
             const double fb = value_at(b);
             if (std::isnan(fb)) return std::nullopt;
-            if (fb <= 0.0) return b;
+            if (fb <= 0.0) return a;  // the crossing is in [a, b], within the 2ε the caller refines
             continue;
         }
         double t = a;

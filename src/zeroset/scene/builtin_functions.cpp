@@ -1,0 +1,262 @@
+// The built-in functions and the one checker of every call to them.
+#include "zeroset/scene/builtin_functions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "zeroset/expr/deform.hpp"
+#include "zeroset/expr/functions.hpp"
+#include "zeroset/expr/shapes.hpp"
+#include "zeroset/scene/wording.hpp"
+
+namespace zeroset {
+
+namespace {
+
+enum class Kind : std::uint8_t {
+    Number,    // any number expression (it may depend on x, y, z)
+    Constant,  // a constant, finite number
+    Vector,    // a constant, finite vector
+    Point,     // a vector of number expressions: where a shape is evaluated
+};
+
+struct Parameter {
+    std::string_view name;
+    Kind kind;
+};
+
+/// The arguments of a call, checked against its entry's parameters.
+class Arguments {
+public:
+    explicit Arguments(std::span<const Argument> given) : given_(given) {}
+
+    [[nodiscard]] std::size_t count() const { return given_.size(); }
+    [[nodiscard]] bool has(std::size_t i) const { return i < given_.size(); }
+    [[nodiscard]] const Expr& number(std::size_t i) const { return given_[i].value.number(); }
+    [[nodiscard]] double constant(std::size_t i) const { return number(i).value(); }
+    [[nodiscard]] double constant_or(std::size_t i, double otherwise) const { return has(i) ? constant(i) : otherwise; }
+    [[nodiscard]] Vec3d vector(std::size_t i) const {
+        const ExprVector& v = given_[i].value.vector();
+        return {v[0].value(), v[1].value(), v[2].value()};
+    }
+    /// The point argument i, or (x, y, z) when it is not given.
+    [[nodiscard]] ExprPoint point(std::size_t i) const {
+        if (!has(i)) return coordinates();
+        const ExprVector& v = given_[i].value.vector();
+        return {v[0], v[1], v[2]};
+    }
+
+private:
+    std::span<const Argument> given_;
+};
+
+struct Builtin {
+    std::string_view name;
+    std::vector<Parameter> parameters;
+    std::size_t required;  // the first `required` parameters must be given; the others are optional, in order
+    bool repeats;          // the last parameter may be given any number of times more (min, max)
+    Expr (*build)(const Arguments& args);
+
+    [[nodiscard]] bool accepts(std::size_t count) const {
+        return count >= required && (repeats || count <= parameters.size());
+    }
+    [[nodiscard]] const Parameter& parameter(std::size_t i) const {
+        return parameters[std::min(i, parameters.size() - 1)];
+    }
+    [[nodiscard]] bool numbers_only() const {
+        return std::ranges::all_of(parameters, [](const Parameter& p) { return p.kind == Kind::Number; });
+    }
+    /// "bend(f, along, toward, rate, [lo, hi])", "min(a, b, ...)".
+    [[nodiscard]] std::string signature() const {
+        std::string text = std::string(name) + "(";
+        for (std::size_t i = 0; i < parameters.size(); ++i) {
+            if (i > 0) text += ", ";
+            if (i == required) text += "[";
+            text += parameters[i].name;
+        }
+        if (required < parameters.size()) text += "]";
+        return text + (repeats ? ", ...)" : ")");
+    }
+};
+
+constexpr Kind N = Kind::Number, C = Kind::Constant, V = Kind::Vector, P = Kind::Point;
+
+/// A function of numbers only.
+Builtin math(std::string_view name, std::vector<std::string_view> parameters, Expr (*build)(const Arguments&)) {
+    std::vector<Parameter> ps;
+    for (const std::string_view p : parameters) ps.push_back({p, N});
+    const std::size_t required = ps.size();
+    return {name, std::move(ps), required, false, build};
+}
+
+Expr fold(const Arguments& a, Expr (*combine)(const Expr&, const Expr&)) {
+    Expr result = a.number(0);
+    for (std::size_t i = 1; i < a.count(); ++i) result = combine(result, a.number(i));
+    return result;
+}
+
+const std::vector<Builtin>& table() {
+    using A = const Arguments&;
+    static const std::vector<Builtin> builtins{
+        // The op table and composites of numbers.
+        math("sqrt", {"a"}, [](A a) { return sqrt(a.number(0)); }),
+        math("abs", {"a"}, [](A a) { return abs(a.number(0)); }),
+        math("exp", {"a"}, [](A a) { return exp(a.number(0)); }),
+        math("log", {"a"}, [](A a) { return log(a.number(0)); }),
+        math("ln", {"a"}, [](A a) { return log(a.number(0)); }),
+        math("sin", {"a"}, [](A a) { return sin(a.number(0)); }),
+        math("cos", {"a"}, [](A a) { return cos(a.number(0)); }),
+        math("tan", {"a"}, [](A a) { return tan(a.number(0)); }),
+        math("atan", {"a"}, [](A a) { return atan(a.number(0)); }),
+        math("atan2", {"y", "x"}, [](A a) { return atan2(a.number(0), a.number(1)); }),
+        math("floor", {"a"}, [](A a) { return floor(a.number(0)); }),
+        math("ceil", {"a"}, [](A a) { return ceil(a.number(0)); }),
+        math("square", {"a"}, [](A a) { return square(a.number(0)); }),
+        math("pow", {"a", "b"}, [](A a) { return pow(a.number(0), a.number(1)); }),
+        math("hypot", {"a", "b"}, [](A a) { return hypot(a.number(0), a.number(1)); }),
+        {"min", {{"a", N}, {"b", N}}, 2, true, [](A a) { return fold(a, min); }},
+        {"max", {{"a", N}, {"b", N}}, 2, true, [](A a) { return fold(a, max); }},
+        math("mod", {"a", "b"}, [](A a) { return mod(a.number(0), a.number(1)); }),
+        math("clamp", {"a", "lo", "hi"}, [](A a) { return clamp(a.number(0), a.number(1), a.number(2)); }),
+        math("mix", {"a", "b", "t"}, [](A a) { return mix(a.number(0), a.number(1), a.number(2)); }),
+        math("smoothstep", {"e0", "e1", "a"}, [](A a) { return smoothstep(a.number(0), a.number(1), a.number(2)); }),
+        // Smooth CSG.
+        {"smooth_union", {{"a", N}, {"b", N}, {"k", C}}, 3, false,
+         [](A a) { return smooth_union(a.number(0), a.number(1), a.constant(2)); }},
+        {"smooth_intersection", {{"a", N}, {"b", N}, {"k", C}}, 3, false,
+         [](A a) { return smooth_intersection(a.number(0), a.number(1), a.constant(2)); }},
+        {"smooth_difference", {{"a", N}, {"b", N}, {"k", C}}, 3, false,
+         [](A a) { return smooth_difference(a.number(0), a.number(1), a.constant(2)); }},
+        // Distance primitives, at (x, y, z) or at a given point.
+        {"sd_sphere", {{"radius", C}, {"point", P}}, 1, false,
+         [](A a) { return sd_sphere(a.point(1), a.constant(0)); }},
+        {"sd_box", {{"half_size", V}, {"point", P}}, 1, false, [](A a) { return sd_box(a.point(1), a.vector(0)); }},
+        {"sd_round_box", {{"half_size", V}, {"radius", C}, {"point", P}}, 2, false,
+         [](A a) { return sd_round_box(a.point(2), a.vector(0), a.constant(1)); }},
+        {"sd_cylinder", {{"radius", C}, {"half_height", C}, {"point", P}}, 2, false,
+         [](A a) { return sd_cylinder(a.point(2), a.constant(0), a.constant(1)); }},
+        {"sd_capped_cone", {{"half_height", C}, {"r_bottom", C}, {"r_top", C}, {"point", P}}, 3, false,
+         [](A a) { return sd_capped_cone(a.point(3), a.constant(0), a.constant(1), a.constant(2)); }},
+        {"sd_capsule", {{"a", V}, {"b", V}, {"radius", C}, {"point", P}}, 3, false,
+         [](A a) { return sd_capsule(a.point(3), a.vector(0), a.vector(1), a.constant(2)); }},
+        {"sd_torus", {{"R", C}, {"r", C}, {"point", P}}, 2, false,
+         [](A a) { return sd_torus(a.point(2), a.constant(0), a.constant(1)); }},
+        {"sd_plane", {{"normal", V}, {"offset", C}, {"point", P}}, 2, false,
+         [](A a) { return sd_plane(a.point(2), a.vector(0), a.constant(1)); }},
+        {"sd_ellipsoid", {{"radii", V}, {"point", P}}, 1, false,
+         [](A a) { return sd_ellipsoid(a.point(1), a.vector(0)); }},
+        // Deformations of a function f: f∘D⁻¹.
+        {"translate", {{"f", N}, {"offset", V}}, 2, false, [](A a) { return translate(a.number(0), a.vector(1)); }},
+        {"rotate", {{"f", N}, {"angles", V}}, 2, false, [](A a) { return rotate_degrees(a.number(0), a.vector(1)); }},
+        {"rotate", {{"f", N}, {"angle", C}, {"axis", V}}, 3, false,
+         [](A a) { return rotate_about(a.number(0), a.vector(2), a.constant(1)); }},
+        {"scale", {{"f", N}, {"s", C}}, 2, false, [](A a) { return scale(a.number(0), a.constant(1)); }},
+        {"scale", {{"f", N}, {"factors", V}}, 2, false, [](A a) { return scale(a.number(0), a.vector(1)); }},
+        {"twist", {{"f", N}, {"axis", V}, {"rate", C}}, 3, false,
+         [](A a) { return twist(a.number(0), Twist(a.vector(1), a.constant(2))); }},
+        {"taper", {{"f", N}, {"axis", V}, {"rate", C}}, 3, false,
+         [](A a) { return taper(a.number(0), Taper(a.vector(1), a.constant(2))); }},
+        {"bend", {{"f", N}, {"along", V}, {"toward", V}, {"rate", C}, {"lo", C}, {"hi", C}}, 4, false,
+         [](A a) {
+             return bend(a.number(0), Bend(a.vector(1), a.vector(2), a.constant(3), a.constant_or(4, -Bend::unlimited),
+                                           a.constant_or(5, Bend::unlimited)));
+         }},
+    };
+    return builtins;
+}
+
+std::vector<const Builtin*> entries_named(std::string_view name) {
+    std::vector<const Builtin*> found;
+    for (const Builtin& b : table())
+        if (b.name == name) found.push_back(&b);
+    return found;
+}
+
+bool is_vector_kind(Kind k) { return k == Kind::Vector || k == Kind::Point; }
+
+/// "1 argument", "2 or 3 arguments", "4 to 6 arguments", "at least 2 arguments".
+std::string counts_accepted(const std::vector<const Builtin*>& overloads) {
+    if (overloads.size() == 1 && overloads[0]->repeats)
+        return "at least " + std::to_string(overloads[0]->required) + " arguments";
+    std::set<std::size_t> counts;
+    for (const Builtin* b : overloads)
+        for (std::size_t n = b->required; n <= b->parameters.size(); ++n) counts.insert(n);
+    const std::size_t lo = *counts.begin(), hi = *counts.rbegin();
+    std::string text = std::to_string(lo);
+    if (counts.size() == 2) text += " or " + std::to_string(hi);
+    if (counts.size() > 2) text += " to " + std::to_string(hi);  // the counts of one entry are contiguous
+    return text + (hi == 1 ? " argument" : " arguments");
+}
+
+}  // namespace
+
+bool is_builtin_function(std::string_view name) { return !entries_named(name).empty(); }
+
+Value call_builtin_function(const TokenStream& in, const Token& name, std::span<const Argument> arguments) {
+    const std::vector<const Builtin*> overloads = entries_named(name.text);
+    const std::string fn(name.text);
+    const bool numbers_only = std::ranges::all_of(overloads, [](const Builtin* b) { return b->numbers_only(); });
+    std::string hint;
+    if (!numbers_only) {
+        hint = "; call it as ";
+        for (std::size_t i = 0; i < overloads.size(); ++i) hint += (i > 0 ? " or " : "") + overloads[i]->signature();
+    }
+    if (numbers_only) {
+        for (std::size_t i = 0; i < arguments.size(); ++i)
+            if (arguments[i].value.is_vector())
+                in.fail(arguments[i].where,
+                        fn + " takes numbers, but argument " + std::to_string(i + 1) + " is a vector");
+    }
+
+    std::vector<const Builtin*> candidates;
+    for (const Builtin* b : overloads)
+        if (b->accepts(arguments.size())) candidates.push_back(b);
+    const std::size_t count = arguments.size();
+    if (candidates.empty())
+        in.fail(name.where, fn + " takes " + counts_accepted(overloads) + ", but " + std::to_string(count) +
+                                (count == 1 ? " was" : " were") + " given" + hint);
+
+    const auto fits = [&](const Builtin* b) {
+        for (std::size_t i = 0; i < count; ++i)
+            if (arguments[i].value.is_vector() != is_vector_kind(b->parameter(i).kind)) return false;
+        return true;
+    };
+    const auto chosen = std::ranges::find_if(candidates, fits);
+    const Builtin& entry = chosen == candidates.end() ? *candidates.front() : **chosen;
+    for (std::size_t i = 0; i < count; ++i) {
+        const Parameter& p = entry.parameter(i);
+        const Value& v = arguments[i].value;
+        const std::string subject =
+            fn + ": " + std::string(p.name) + " (argument " + std::to_string(i + 1) + ") must be ";
+        const auto fail = [&](const std::string& what) { in.fail(arguments[i].where, subject + what + hint); };
+        if (v.is_vector() && !is_vector_kind(p.kind)) fail("a number, but it is a vector");
+        if (!v.is_vector() && is_vector_kind(p.kind))
+            fail(std::string(p.kind == Kind::Point ? "a point" : "a vector") + " (a, b, c), but it is a number");
+        if (p.kind == Kind::Constant) {
+            const Expr& e = v.number();
+            if (!e.is_constant()) fail("a constant number, but it depends on " + variables_of(e));
+            if (!std::isfinite(e.value())) fail("finite, but it is " + format_number(e.value()));
+        }
+        if (p.kind == Kind::Vector) {
+            const ExprVector& e = v.vector();
+            for (int k = 0; k < 3; ++k) {
+                const Expr& c = e[static_cast<std::size_t>(k)];
+                if (!c.is_constant()) fail("a constant vector, but it depends on " + variables_of(e));
+                if (!std::isfinite(c.value()))
+                    fail("finite, but component " + std::to_string(k + 1) + " is " + format_number(c.value()));
+            }
+        }
+    }
+    try {
+        return entry.build(Arguments(arguments));
+    } catch (const std::invalid_argument& e) {
+        in.fail(name.where, fn + ": " + e.what() + hint);
+    }
+}
+
+}  // namespace zeroset
