@@ -127,3 +127,25 @@ TEST(Normals, AngularErrorOfEachModeForSeveralSteps) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Normals, AnalyticNormalsSurviveAVanishingGradient) {
+    // On the cap of a capped cylinder's distance, exactly at its height, the
+    // max(·, 0) in the formula ties; the normal must still point up.
+    LeafDescription d;
+    d.surface = max(sqrt(square(x) + square(y)) - 0.5, abs(z) - 0.4);
+    d.bounds = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+    const ImplicitLeaf leaf(0, d);
+    TraceScratch scratch(1);
+    SurfaceRef s;
+    s.leaf = &leaf;
+    s.kind = BoundaryKind::Surface;
+    s.local_point = {0.1, 0.2, 0.4};
+    const Vec3d n = leaf.local_normal(s, scratch);
+    EXPECT_NEAR(n.z, 1.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace zeroset

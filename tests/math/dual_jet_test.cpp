@@ -248,3 +248,24 @@ TEST(Jet, LineAndProduct) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Dual, ATieOfMinOrMaxTakesTheMiddleOfBothSlopesOrTheirHull) {
+    // max(d, 0) at d = 0, as on the surface of a box's distance: not 0.
+    const Dual<double> d = Dual<double>::variable(0.0, 0);
+    const Dual<double> m = max(d, Dual<double>(0.0));
+    EXPECT_EQ(m.v, 0.0);
+    EXPECT_EQ(m.g.x, 0.5);
+    const Dual<double> e = min(Dual<double>::variable(1.0, 0), Dual<double>::variable(1.0, 1));
+    EXPECT_EQ(e.g, (Vec3d{0.5, 0.5, 0.0}));  // an edge of two faces: their bisector
+    // Intervals enclose every subgradient.
+    const Dual<Interval> a = Dual<Interval>::variable(Interval(2.0), 0), b = Dual<Interval>::variable(Interval(2.0), 1);
+    const Dual<Interval> i = max(a, b);
+    EXPECT_TRUE(i.g.x.contains(Interval(0.0, 1.0)));
+    EXPECT_TRUE(i.g.y.contains(Interval(0.0, 1.0)));
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -145,17 +145,23 @@ Vec3d ImplicitLeaf::local_normal(const SurfaceRef& surface, TraceScratch& scratc
     const Vec3d& p = surface.local_point;
     if (surface.kind == BoundaryKind::Bounds) return bounds_normal(description_.bounds, p);
     LeafScratch& leaf = scratch_for(scratch);
-    const double h = normal_step();
     const auto f = [&](double x, double y, double z) { return leaf.value(x, y, z); };
+    const auto central = [&](double h) {
+        return unit_or_zero({f(p.x + h, p.y, p.z) - f(p.x - h, p.y, p.z), f(p.x, p.y + h, p.z) - f(p.x, p.y - h, p.z),
+                             f(p.x, p.y, p.z + h) - f(p.x, p.y, p.z - h)});
+    };
     switch (description_.normals) {
-        case NormalMode::Analytic: return unit_or_zero(evaluate_gradient(leaf.gradient, p).g);  // eq. 33
-        case NormalMode::ForwardDifference: {                                                    // eq. 34
-            const double f0 = f(p.x, p.y, p.z);
+        case NormalMode::Analytic: {  // eq. 33
+            const Vec3d n = unit_or_zero(evaluate_gradient(leaf.gradient, p).g);
+            // Where ∇f vanishes (or overflows) exactly — at a kink of a
+            // distance function — central differences over their default step.
+            return n != Vec3d{} ? n : central(1e-6 * box_.diagonal());
+        }
+        case NormalMode::ForwardDifference: {  // eq. 34
+            const double h = normal_step(), f0 = f(p.x, p.y, p.z);
             return unit_or_zero({f(p.x + h, p.y, p.z) - f0, f(p.x, p.y + h, p.z) - f0, f(p.x, p.y, p.z + h) - f0});
         }
-        case NormalMode::CentralDifference:
-            return unit_or_zero({f(p.x + h, p.y, p.z) - f(p.x - h, p.y, p.z), f(p.x, p.y + h, p.z) - f(p.x, p.y - h, p.z),
-                                 f(p.x, p.y, p.z + h) - f(p.x, p.y, p.z - h)});
+        case NormalMode::CentralDifference: return central(normal_step());
     }
     return {};
 }

@@ -29,6 +29,10 @@ struct Dual {
 };
 
 namespace detail {
+template <class T>
+Vec3<T> tie_gradient(const Vec3<T>& a, const Vec3<T>& b) {
+    return {tie_derivative(a.x, b.x), tie_derivative(a.y, b.y), tie_derivative(a.z, b.z)};
+}
 /// The chain rule for a unary function with derivative `dg` at the argument.
 template <class T>
 Dual<T> chain(const Dual<T>& u, T value, T dg) {
@@ -119,15 +123,20 @@ template <class T> Dual<T> abs(const Dual<T>& a) {
     return {abs(a.v), {hull(a.g.x, -a.g.x), hull(a.g.y, -a.g.y), hull(a.g.z, -a.g.z)}};
 }
 /// min/max take the gradient of the side that wins; where either side can win
-/// over an interval, the hull of both (a sound enclosure of the subgradient).
+/// over an interval, the hull of both (a sound enclosure of the subgradient);
+/// where the sides are exactly equal, their tie_derivative.
 template <class T> Dual<T> min(const Dual<T>& a, const Dual<T>& b) {
-    if (certainly_le(a.v, b.v)) return a;
-    if (certainly_le(b.v, a.v)) return b;
+    const bool a_wins = certainly_le(a.v, b.v), b_wins = certainly_le(b.v, a.v);
+    if (a_wins && b_wins) return {a.v, detail::tie_gradient(a.g, b.g)};
+    if (a_wins) return a;
+    if (b_wins) return b;
     return {min(a.v, b.v), {hull(a.g.x, b.g.x), hull(a.g.y, b.g.y), hull(a.g.z, b.g.z)}};
 }
 template <class T> Dual<T> max(const Dual<T>& a, const Dual<T>& b) {
-    if (certainly_le(b.v, a.v)) return a;
-    if (certainly_le(a.v, b.v)) return b;
+    const bool a_wins = certainly_le(b.v, a.v), b_wins = certainly_le(a.v, b.v);
+    if (a_wins && b_wins) return {a.v, detail::tie_gradient(a.g, b.g)};
+    if (a_wins) return a;
+    if (b_wins) return b;
     return {max(a.v, b.v), {hull(a.g.x, b.g.x), hull(a.g.y, b.g.y), hull(a.g.z, b.g.z)}};
 }
 

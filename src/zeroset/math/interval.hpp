@@ -327,5 +327,8 @@ inline Interval hull(Interval a, Interval b) {
     return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
 }
 inline bool is_exact_zero(Interval a) { return a.lo == 0.0 && a.hi == 0.0; }
+/// The derivative of min or max where both sides are equal: every
+/// subgradient, the hull of the two one-sided ones.
+inline Interval tie_derivative(Interval a, Interval b) { return hull(a, b); }
 
 }  // namespace zeroset

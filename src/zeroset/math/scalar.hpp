@@ -56,6 +56,11 @@ template <std::floating_point F> inline bool certainly_le(F a, F b) { return a <
 /// The smallest number that stands for both (only reached by NaN for scalars).
 template <std::floating_point F> inline F hull(F a, F /*b*/) { return a; }
 template <std::floating_point F> inline bool is_exact_zero(F a) { return a == F(0); }
+/// A derivative of min or max where both sides are equal: the middle of the
+/// two one-sided ones (for a number; an interval takes their hull). At
+/// max(d, 0) with d = 0 — on the surface of a box's distance — that keeps
+/// the gradient from vanishing.
+template <std::floating_point F> inline F tie_derivative(F a, F b) { return F(0.5) * (a + b); }
 
 /// True when floor, tan or atan2 may jump somewhere in the values the numbers
 /// stand for (an integer, a pole, the cut x ≤ 0, y = 0): never for a point,
