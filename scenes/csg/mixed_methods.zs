@@ -32,4 +32,4 @@ difference "spongy ring" {
   }
 }
 
-object "floor" { surface y + 0.47  bounds box((-6, -0.55, -4), (6, -0.47, 8))  material { color (0.7, 0.7, 0.68)  specular 0 } }
+object "plate" { surface y + 0.47  bounds box((-2.3, -0.55, -1.9), (2.3, -0.47, 2.4))  material { color (0.7, 0.7, 0.68)  specular 0 } }
