@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "zeroset/math/scalar.hpp"
+
 namespace zeroset {
 
 namespace {
@@ -37,7 +39,12 @@ Vec3d shade(SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit, ShadingC
             if (tracer.occluded({origin, to_light}, distance)) continue;
         }
         const Vec3d half = normalize(to_light - ray.dir);
-        const double specular = std::pow(std::max(0.0, dot(hit.normal, half)), m.shininess);
+        const double cosine = dot(hit.normal, half);
+        double specular = 0.0;
+        if (m.specular > 0.0 && cosine > 0.0) {
+            const auto n = integer_value(m.shininess);  // the usual case: repeated squaring, not libm's pow
+            specular = n ? powi(cosine, *n) : std::pow(cosine, m.shininess);
+        }
         color += hadamard(light.color, m.color * (m.diffuse * lambert) + Vec3d{1, 1, 1} * (m.specular * specular));
     }
     return color;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 
 #include "zeroset/roots/bracket.hpp"
 #include "zeroset/roots/polynomial_roots.hpp"
@@ -12,6 +13,26 @@ namespace zeroset {
 
 namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
+
+/// The root of a line or a quadratic in [a, b] by its closed form (the
+/// quadratic's stable pair, Numerical Recipes §5.6), if rounding leaves it
+/// there; nothing for a higher degree.
+std::optional<double> closed_form_root(std::span<const double> p, double a, double b) {
+    std::size_t n = p.size();
+    while (n > 0 && p[n - 1] == 0.0) --n;
+    if (n == 2) {
+        const double t = -p[0] / p[1];
+        if (a <= t && t <= b) return t;
+        return std::nullopt;
+    }
+    if (n != 3) return std::nullopt;
+    const double disc = p[1] * p[1] - 4.0 * p[2] * p[0];
+    if (!(disc >= 0.0)) return std::nullopt;
+    const double q = -0.5 * (p[1] + std::copysign(std::sqrt(disc), p[1]));
+    for (const double t : {q / p[2], q != 0.0 ? p[0] / q : q / p[2]})
+        if (a <= t && t <= b) return t;
+    return std::nullopt;
+}
 }  // namespace
 
 PolynomialSample sample_polynomial(std::span<const double> p, double t) {
@@ -31,6 +52,16 @@ PolynomialSample sample_polynomial(std::span<const double> p, double t) {
 double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialSample hi, int& evaluations) {
     double a = lo.t;
     double b = hi.t;
+    if (const auto t = closed_form_root(p, a, b)) {
+        // One Newton step polishes it, kept if it lowers |p|.
+        const PolynomialSample v = sample_polynomial(p, *t);
+        ++evaluations;
+        if (v.value == 0.0 || v.derivative == 0.0) return *t;
+        const double polished = *t - v.value / v.derivative;
+        if (!(a <= polished && polished <= b)) return *t;
+        ++evaluations;
+        return std::abs(horner(p, polished).value) <= std::abs(v.value) ? polished : *t;
+    }
     const bool a_negative = lo.value < 0.0;
     double x = a + (b - a) * (lo.value / (lo.value - hi.value));
     double previous_step = b - a;

@@ -22,7 +22,8 @@ struct PolynomialSample {
 PolynomialSample sample_polynomial(std::span<const double> p, double t);
 
 /// The root of p on [lo.t, hi.t], where p is monotone and lo.value,
-/// hi.value differ in sign: safeguarded Newton from the secant point, kept
+/// hi.value differ in sign. A line or a quadratic: its closed form and one
+/// Newton step. Otherwise safeguarded Newton from the secant point, kept
 /// inside the shrinking bracket (Numerical Recipes' rtsafe). It stops, after
 /// one last Newton step (kept if it lowers |p|), when p is within its
 /// rounding-error bound of 0 or the step is within a few ulps of the point.
