@@ -51,11 +51,21 @@ std::optional<Hit> Group::first_hit(const Ray& ray, double t_min, double t_max, 
 }
 
 bool Group::occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    // The child that blocked last time first (children's own queries may
+    // reuse the cache's slot, so it is read once and written afresh).
+    const TraceScratch::Occluder last = scratch.last_occluder(this);
+    const std::uint32_t tried = last.group == this ? last.child : ~std::uint32_t{0};
+    if (tried < children_.size() && children_[tried]->occluded(ray, t_min, t_max, scratch)) return true;
+    const auto blocks = [&](std::uint32_t i) {
+        if (i == tried || !children_[i]->occluded(ray, t_min, t_max, scratch)) return false;
+        scratch.last_occluder(this) = {this, i};
+        return true;
+    };
     for (std::size_t i = bounded_; i < children_.size(); ++i)
-        if (children_[i]->occluded(ray, t_min, t_max, scratch)) return true;
+        if (blocks(static_cast<std::uint32_t>(i))) return true;
     bool blocked = false;
     bvh_.traverse(ray, t_min, t_max, [&](std::uint32_t i, double limit) {
-        blocked = children_[i]->occluded(ray, t_min, limit, scratch);
+        blocked = blocks(i);
         return blocked ? -INFINITY : limit;
     });
     return blocked;

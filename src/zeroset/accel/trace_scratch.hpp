@@ -5,7 +5,9 @@
 // primitives themselves stay shared and read-only.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -54,8 +56,21 @@ public:
         SpanList* list_;
     };
 
+    /// The child of a group that last blocked a shadow ray, which blocks the
+    /// next one from a neighbouring pixel often (POV-Ray's shadow cache): a
+    /// small table indexed by the group's address, so a collision only costs
+    /// a test that fails.
+    struct Occluder {
+        const void* group = nullptr;
+        std::uint32_t child = 0;
+    };
+    Occluder& last_occluder(const void* group) {
+        return occluders_[(reinterpret_cast<std::uintptr_t>(group) >> 6) % occluders_.size()];
+    }
+
 private:
     std::vector<std::unique_ptr<LeafScratch>> leaves_;
+    std::array<Occluder, 64> occluders_{};
     std::vector<std::unique_ptr<SpanList>> span_pool_;
     std::size_t spans_in_use_ = 0;
 };

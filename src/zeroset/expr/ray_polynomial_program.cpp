@@ -185,6 +185,13 @@ void RayPolynomialProgram::run(const Step& s, double* v, double* m) {
         case StepKind::Add:
         case StepKind::Sub: {
             const double sign = s.kind == StepKind::Add ? 1.0 : -1.0;
+            if (da == db) {  // no padding to do
+                for (int i = 0; i <= da; ++i) {
+                    vo[i] = va[i] + sign * vb[i];
+                    mo[i] = ma[i] + mb[i];
+                }
+                break;
+            }
             for (int i = 0; i <= s.out_degree; ++i) {
                 const double x = i <= da ? va[i] : 0.0;
                 const double y = i <= db ? vb[i] : 0.0;
@@ -200,6 +207,15 @@ void RayPolynomialProgram::run(const Step& s, double* v, double* m) {
             }
             break;
         case StepKind::Mul:
+            if (da == 1 && db == 1) {  // the square or product of two coordinates: the commonest step, unrolled
+                vo[0] = va[0] * vb[0];
+                vo[1] = va[0] * vb[1] + va[1] * vb[0];
+                vo[2] = va[1] * vb[1];
+                mo[0] = ma[0] * mb[0];
+                mo[1] = ma[0] * mb[1] + ma[1] * mb[0];
+                mo[2] = ma[1] * mb[1];
+                break;
+            }
             std::fill(vo, vo + s.out_degree + 1, 0.0);
             std::fill(mo, mo + s.out_degree + 1, 0.0);
             for (int i = 0; i <= da; ++i) {
