@@ -8,31 +8,11 @@
 #include <string>
 
 #include "scene_test_support.hpp"
+#include "support/bounds_proof.hpp"
 #include "zeroset/render/renderer.hpp"
 
 namespace zeroset {
 namespace {
-
-/// True when interval arithmetic proves f > 0 on the region (a face of a
-/// box: one side flat), subdividing doubtful parts `depth` times.
-bool proven_positive(Evaluator<Interval>& f, const Box3& region, int depth) {
-    if (evaluate_box(f, region.lo, region.hi).lo > 0.0) return true;
-    if (depth == 0) return false;
-    const Vec3d mid = region.center();
-    for (int quarter = 0; quarter < 8; ++quarter) {
-        Vec3d lo = region.lo, hi = region.hi;
-        bool repeated = false;  // a flat axis splits into nothing: each part once
-        for (int axis = 0; axis < 3; ++axis) {
-            if (region.lo[axis] == region.hi[axis]) {
-                repeated = repeated || (quarter >> axis & 1);
-                continue;
-            }
-            (quarter >> axis & 1 ? lo : hi)[axis] = mid[axis];
-        }
-        if (!repeated && !proven_positive(f, {lo, hi}, depth - 1)) return false;
-    }
-    return true;
-}
 
 std::vector<std::filesystem::path> deform_scenes() {
     std::vector<std::filesystem::path> scenes;
@@ -46,15 +26,8 @@ TEST(DeformScenes, BoundsHoldTheDeformedSurface) {
     for (const auto& path : deform_scenes()) {
         const Scene scene = load_scene(path);
         const Object& object = placed_objects(scene).at(0).object();
-        const Box3 bounds = object.bounds.enclosing_box();
-        const Tape tape(object.surface);
-        Evaluator<Interval> f(tape);
-        for (int face = 0; face < 6; ++face) {
-            Box3 side = bounds;
-            const int axis = face / 2;
-            side.lo[axis] = side.hi[axis] = face % 2 ? bounds.hi[axis] : bounds.lo[axis];
-            EXPECT_TRUE(proven_positive(f, side, 8)) << path.filename() << ": the surface may cross face " << face;
-        }
+        EXPECT_TRUE(test::unproven_faces(object.surface, object.bounds.enclosing_box(), 8).empty())
+            << path.filename() << ": the surface may cross its bounds";
     }
 }
 

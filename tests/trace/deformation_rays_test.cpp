@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "support/bounds_proof.hpp"
 #include "zeroset/expr/deform.hpp"
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/functions.hpp"
@@ -47,38 +48,10 @@ std::vector<DeformedObject> objects() {
     };
 }
 
-/// True when interval arithmetic proves f > 0 on the region, subdividing doubtful parts `depth` times.
-bool proven_positive(Evaluator<Interval>& f, const Box3& region, int depth) {
-    if (evaluate_box(f, region.lo, region.hi).lo > 0.0) return true;
-    if (depth == 0) return false;
-    const Vec3d mid = region.center();
-    for (int octant = 0; octant < 8; ++octant) {
-        Vec3d lo = region.lo, hi = region.hi;
-        bool repeated = false;  // a flat axis splits into nothing: each part once
-        for (int axis = 0; axis < 3; ++axis) {
-            if (region.lo[axis] == region.hi[axis]) {
-                repeated = repeated || (octant >> axis & 1);
-                continue;
-            }  // a face: keep it flat
-            (octant >> axis & 1 ? lo : hi)[axis] = mid[axis];
-        }
-        if (!repeated && !proven_positive(f, {lo, hi}, depth - 1)) return false;
-    }
-    return true;
-}
-
 // The bounds hold each surface: f > 0 all over the bounds' six faces.
 TEST(DeformationRays, BoundsHoldTheDeformedSurfaces) {
-    for (const DeformedObject& object : objects()) {
-        const Tape tape(object.f);
-        Evaluator<Interval> f(tape);
-        for (int face = 0; face < 6; ++face) {
-            Box3 side = object.bounds;
-            const int axis = face / 2;
-            side.lo[axis] = side.hi[axis] = face % 2 ? object.bounds.hi[axis] : object.bounds.lo[axis];
-            EXPECT_TRUE(proven_positive(f, side, 7)) << object.name << ", face " << face;
-        }
-    }
+    for (const DeformedObject& object : objects())
+        EXPECT_TRUE(test::unproven_faces(object.f, object.bounds, 7).empty()) << object.name;
 }
 
 TEST(DeformationRays, SphereTracingFindsTheIntervalMethodsFirstHit) {
