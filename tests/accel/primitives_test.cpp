@@ -243,3 +243,48 @@ TEST(Primitives, AGroupTestsItsUnboundedChildrenOnEveryRay) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Primitives, CsgHandlesRaysStartingInsideAndSharedFaces) {
+    Leaves leaves;
+    // A = the cube [−1, 1]³; B = the unit cube scaled by 0.7 and moved by 0.3
+    // along x, [−0.4, 1] × [−0.7, 0.7]²: the two share the face x = 1, whose
+    // roots their arithmetic places an ulp or two apart.
+    const auto a = leaves.add(cube(1.0), around({0, 0, 0}, 1.1), Method::Interval, 1);
+    const auto unit = leaves.add(cube(1.0), around({0, 0, 0}, 1.1), Method::Lg, 2);
+    const auto b = std::make_shared<Instance>(unit, Mat4::translate({0.3, 0, 0}) * Mat4::scale({0.7, 0.7, 0.7}),
+                                              no_material);
+    const CsgNode slab(CsgNode::Operation::Difference, {a, b});
+    TraceScratch scratch(leaves.count());
+    // From +x through the shared face: the first surface is B's face at
+    // x = −0.4, seen from outside B — never a sliver of A at x = 1.
+    std::mt19937 random(23);
+    std::uniform_real_distribution<double> u(-0.65, 0.65);
+    for (int i = 0; i < 400; ++i) {
+        const Ray ray{{3 + 0.01 * u(random), u(random), u(random)}, normalize(Vec3d{-1, 0.01 * u(random), 0.0})};
+        const auto hit = slab.first_hit(ray, 0.0, INFINITY, scratch);
+        ASSERT_TRUE(hit.has_value());
+        EXPECT_NEAR(ray.at(hit->t).x, -0.4, 1e-12) << i;
+        EXPECT_EQ(hit->surface.material, 2);
+        EXPECT_TRUE(hit->surface.flipped);
+        EXPECT_NEAR(normal_of(*hit, scratch).x, 1.0, 1e-9);  // B's −x face, flipped: pointing +x
+    }
+    // From inside the result: the ray starts inside (an open span at t_min).
+    const auto inside = slab.first_hit({{-0.7, 0, 0}, {1, 0, 0}}, 0.0, INFINITY, scratch);
+    ASSERT_TRUE(inside.has_value());
+    EXPECT_EQ(inside->t, 0.0);
+    EXPECT_EQ(inside->surface.kind, BoundaryKind::Open);
+    SpanList spans;
+    slab.spans({{-0.7, 0, 0}, {1, 0, 0}}, 0.0, INFINITY, scratch, spans);
+    ASSERT_EQ(spans.size(), 1u);
+    EXPECT_NEAR(spans[0].exit.t, 0.3, 1e-12);  // leaving through B's face at x = −0.4
+    // From inside B (outside the result), looking back: entering at x = −0.4.
+    const auto back = slab.first_hit({{0.5, 0, 0}, {-1, 0, 0}}, 0.0, INFINITY, scratch);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_NEAR(back->t, 0.9, 1e-12);
+}
+
+}  // namespace
+}  // namespace zeroset

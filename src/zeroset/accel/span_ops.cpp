@@ -2,6 +2,7 @@
 #include "zeroset/accel/span_ops.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace zeroset {
 
@@ -12,9 +13,12 @@ Hit flipped(Hit h) {
     return h;
 }
 
-/// Appends [enter, exit] unless it has length 0.
+/// Appends [enter, exit] unless it is a sliver: no longer than the rounding
+/// that tells two solids' roots on one face apart (12 digits of t; every
+/// guaranteed method places a simple root to 15).
 void push_proper(SpanList& out, const Hit& enter, const Hit& exit) {
-    if (enter.t < exit.t) out.push_back({enter, exit});
+    const double sliver = 1e-12 * std::max(std::abs(enter.t), std::abs(exit.t));
+    if (exit.t - enter.t > sliver) out.push_back({enter, exit});
 }
 
 }  // namespace

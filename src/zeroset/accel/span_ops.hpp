@@ -5,8 +5,10 @@
 // solid's boundaries are flipped (its inside is the result's outside).
 //
 // Solids are closed sets and results are regularised: an intersection or a
-// difference keeps no span of length 0 (two solids only touching, or a face
-// shared by both); a union keeps them (a ray touching a solid tangentially).
+// difference keeps no span of length 0 — two solids only touching, or a face
+// shared by both, whose roots the two solids' methods may place an ulp or
+// two apart (such slivers, shorter than 10⁻¹² of t, are dropped too) — while
+// a union keeps them (a ray touching a solid tangentially).
 #pragma once
 
 #include "zeroset/accel/surface_ref.hpp"
