@@ -288,3 +288,30 @@ TEST(Primitives, CsgHandlesRaysStartingInsideAndSharedFaces) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Primitives, APlaneTakesPartInCsg) {
+    // A floor y ≤ 0 with a pit dug by a ball: spans that run on to t = ∞.
+    Leaves leaves;
+    const auto pit = leaves.add(ball({0, 0, 0}, 1.0), around({0, 0, 0}, 1.01));
+    const CsgNode dug(CsgNode::Operation::Difference,
+                      {std::make_shared<HalfSpace>("floor", y, 1), pit});
+    TraceScratch scratch(leaves.count());
+    const auto away = dug.first_hit({{3, 2, 0}, {0, -1, 0}}, 0.0, INFINITY, scratch);
+    ASSERT_TRUE(away.has_value());
+    EXPECT_NEAR(away->t, 2.0, 1e-12);  // the floor itself
+    const auto in_pit = dug.first_hit({{0, 2, 0}, {0, -1, 0}}, 0.0, INFINITY, scratch);
+    ASSERT_TRUE(in_pit.has_value());
+    EXPECT_NEAR(in_pit->t, 3.0, 1e-12);  // the bottom of the pit, at y = −1
+    EXPECT_TRUE(dug.occluded({{3, 2, 0}, {0, -1, 0}}, 0.0, INFINITY, scratch));
+    const CsgNode wedge(CsgNode::Operation::Intersection,
+                        {std::make_shared<HalfSpace>("a", y, 1), std::make_shared<HalfSpace>("b", x, 2)});
+    const auto corner = wedge.first_hit({{-1, 3, 0}, {0, -1, 0}}, 0.0, INFINITY, scratch);
+    ASSERT_TRUE(corner.has_value());
+    EXPECT_NEAR(corner->t, 3.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace zeroset

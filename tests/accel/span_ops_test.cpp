@@ -2,6 +2,7 @@
 // a t is inside a ∪ b, a ∩ b or a − b exactly when it is inside the result.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "zeroset/accel/span_ops.hpp"
@@ -48,8 +49,9 @@ TEST(SpanOps, AgreeWithPointwiseSetOperations) {
     std::mt19937 random(3);
     for (int trial = 0; trial < 200; ++trial) {
         const SpanList a = random_spans(random, 1), b = random_spans(random, 2);
-        SpanList u, i, d;
-        unite(a, b, u);
+        SpanList u = a, i, d;
+        u.insert(u.end(), b.begin(), b.end());
+        merge_overlapping(u);
         intersect(a, b, i);
         subtract(a, b, d);
         expect_sorted_and_disjoint(u);
@@ -77,6 +79,18 @@ TEST(SpanOps, ADifferenceFlipsTheSubtractedBoundaries) {
     EXPECT_FALSE(d[0].enter.surface.flipped);
 }
 
+TEST(SpanOps, SpansRunningToInfinityAreKept) {
+    // A plane's solid beyond its crossing runs on to t = ∞.
+    const SpanList floor{{at(2, 1), at(INFINITY, 0)}}, pit{{at(3, 2), at(4, 2)}};
+    SpanList out;
+    subtract(floor, pit, out);
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(out[1].enter.t, 4.0);
+    EXPECT_EQ(out[1].exit.t, INFINITY);
+    intersect(floor, floor, out);
+    EXPECT_EQ(out.size(), 1u);
+}
+
 TEST(SpanOps, IntersectionAndDifferenceAreRegularised) {
     // Two solids that only touch share no volume; a solid minus itself is empty.
     const SpanList a{{at(0, 1), at(1, 1)}}, b{{at(1, 2), at(2, 2)}};
@@ -86,8 +100,9 @@ TEST(SpanOps, IntersectionAndDifferenceAreRegularised) {
     subtract(a, a, out);
     EXPECT_TRUE(out.empty());
     // A union keeps a tangent touch (a span of length 0).
-    const SpanList touch{{at(5, 3), at(5, 3)}};
-    unite(a, touch, out);
+    out = a;
+    out.push_back({at(5, 3), at(5, 3)});
+    merge_overlapping(out);
     EXPECT_EQ(out.size(), 2u);
 }
 

@@ -26,6 +26,9 @@ TEST(RenderSummary, NamesEveryFigure) {
     EXPECT_NE(line.find("2 threads"), std::string::npos) << line;
     EXPECT_NE(line.find("1.500 s (prepare 0.250 s, trace 1.250 s)"), std::string::npos) << line;
     EXPECT_NE(line.find("objects: polynomial 3, plane 1"), std::string::npos) << line;
+    EXPECT_EQ(line.find("failed"), std::string::npos) << line;
+    s.counters.failed_queries = 4;
+    EXPECT_NE(summary_line(s).find("; 4 ray queries failed"), std::string::npos) << summary_line(s);
     EXPECT_NE(line.find("1921000 rays"), std::string::npos) << line;
     EXPECT_NE(line.find("12345 hits"), std::string::npos) << line;
     EXPECT_NE(line.find("50.0M evaluations"), std::string::npos) << line;

@@ -138,7 +138,8 @@ TEST(SceneNodes, Errors) {
     EXPECT_EQ(error_of(std::string(unit_ball) + " rotate 30 }"),
               "scene.zs:1:86: expected 'around' and an axis, as in rotate 30 around (0, 1, 0), but found '}'");
     EXPECT_EQ(error_of(std::string(unit_ball) + " shear { xy 1 yx 1 } }"),
-              "scene.zs:1:76: shear: the transform is singular (determinant 0); it would flatten the object");
+              "scene.zs:1:76: shear: the transform is singular or nearly so (|det| / column lengths = 0); it would "
+              "flatten the object");
     EXPECT_EQ(error_of(std::string(unit_ball) + " matrix (1, 0, 0) }"),
               "scene.zs:1:91: expected ',' (a matrix has 12 numbers: 3 rows of A, each followed by its t) but "
               "found ')'");

@@ -69,3 +69,35 @@ TEST(SphereMethod, FindsCrossingsOnSegmentsWithoutALipschitzBound) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+// A ray that cuts a chord shorter than 2ε through one ball (found, since it
+// is longer than ε) and then goes on through a second: after the first root
+// the tracer resumes 2ε on — outside again — and must go on looking for an
+// entry, not an exit, or it loses the second ball.
+TEST(SphereMethod, AllHitsGoOnPastAShortChord) {
+    const Expr x = var_x(), y = var_y(), z = var_z();
+    const Bounds bounds = Bounds::make_box({{-1.5, -1.5, -1.5}, {4.5, 1.5, 1.5}});
+    const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
+    const double eps = settings.sphere_epsilon;
+    // Chord 2·sqrt(1 − d²) = 1.5ε.
+    const double d = std::sqrt(1.0 - square(0.75 * eps));
+    const Expr f = min(square(x) + square(y) + square(z) - 1.0, square(x - 3.0) + square(y - d) + square(z) - 1.0);
+    const Tape tape(f, SlotLayout::OnePerValue);
+    const Ray ray{{-1.4, d, 0}, {1, 0, 0}};
+    RayFunction h(tape);
+    h.set_ray(ray);
+    TraceCounters counters;
+    std::vector<double> hits;
+    make_root_finder(Method::Sphere, tape, settings)->all_hits(h, *bounds.clip(ray, 0.0, INFINITY), hits, counters);
+    std::vector<double> x_hits;
+    for (const double t : hits) x_hits.push_back(ray.at(t).x);
+    ASSERT_GE(x_hits.size(), 2u);
+    EXPECT_NEAR(x_hits[x_hits.size() - 2], 2.0, 1e-9);  // the second ball, entered …
+    EXPECT_NEAR(x_hits.back(), 4.0, 1e-9);               // … and left
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -54,7 +54,7 @@ void HalfSpace::spans(const Ray& ray, double t_min, double t_max, TraceScratch&,
     const double crossing = slope != 0.0 ? t_min - f0 / slope : std::numeric_limits<double>::infinity();
     if (f0 <= 0.0) {  // inside at t_min, until the ray leaves through the plane
         const bool leaves = slope > 0.0 && crossing < t_max;
-        out.push_back({boundary(ray, t_min, BoundaryKind::Open),
+        out.push_back({boundary(ray, t_min, f0 == 0.0 ? BoundaryKind::Surface : BoundaryKind::Open),
                        leaves ? boundary(ray, crossing, BoundaryKind::Surface) : boundary(ray, t_max, BoundaryKind::Open)});
     } else if (slope < 0.0 && crossing <= t_max) {
         out.push_back({boundary(ray, crossing, BoundaryKind::Surface), boundary(ray, t_max, BoundaryKind::Open)});

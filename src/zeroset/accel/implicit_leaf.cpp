@@ -86,6 +86,7 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
     leaf.h.set_ray(ray);
     const HitResult hit = leaf.finder->first_hit(leaf.h, *span, scratch.counters);
     note_nan(leaf, nans, scratch);
+    if (hit.status == HitStatus::Failed) ++scratch.counters.failed_queries;
     if (!hit.t) return std::nullopt;
     // A hit at the span's start with the ray already inside: on the bounds'
     // cut when the ray came in through them, else the ray starts inside.
@@ -103,7 +104,8 @@ void ImplicitLeaf::spans(const Ray& ray, double t_min, double t_max, TraceScratc
     leaf.h.set_ray(ray);
     std::vector<double>& roots = leaf.roots;
     roots.clear();
-    leaf.finder->all_hits(leaf.h, *span, roots, scratch.counters);
+    if (leaf.finder->all_hits(leaf.h, *span, roots, scratch.counters) == HitStatus::Failed)
+        ++scratch.counters.failed_queries;  // the spans below are those of the roots found so far
     // The events: t0, the roots strictly inside the span, t1.
     std::sort(roots.begin(), roots.end());
     std::erase_if(roots, [&](double t) { return !(t > span->t0 && t < span->t1); });

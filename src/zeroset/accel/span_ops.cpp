@@ -17,6 +17,10 @@ Hit flipped(Hit h) {
 /// that tells two solids' roots on one face apart (12 digits of t; every
 /// guaranteed method places a simple root to 15).
 void push_proper(SpanList& out, const Hit& enter, const Hit& exit) {
+    if (!std::isfinite(exit.t)) {  // a span running on to t = ∞ (a plane's): no sliver
+        if (enter.t < exit.t) out.push_back({enter, exit});
+        return;
+    }
     const double sliver = 1e-12 * std::max(std::abs(enter.t), std::abs(exit.t));
     if (exit.t - enter.t > sliver) out.push_back({enter, exit});
 }
@@ -34,13 +38,6 @@ void merge_overlapping(SpanList& spans) {
         spans[kept++] = spans[i];
     }
     spans.resize(kept);
-}
-
-void unite(const SpanList& a, const SpanList& b, SpanList& out) {
-    out.clear();
-    out.insert(out.end(), a.begin(), a.end());
-    out.insert(out.end(), b.begin(), b.end());
-    merge_overlapping(out);
 }
 
 void intersect(const SpanList& a, const SpanList& b, SpanList& out) {

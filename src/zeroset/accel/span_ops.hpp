@@ -15,13 +15,11 @@
 
 namespace zeroset {
 
-/// a ∪ b into out (cleared first). `a` and `b` are each sorted and disjoint.
-void unite(const SpanList& a, const SpanList& b, SpanList& out);
-
-/// Sorts any spans by their start and merges the overlapping ones, in place.
+/// The union of any spans, in place: sorted by their start, the
+/// overlapping ones merged (a group's spans are its children's, merged).
 void merge_overlapping(SpanList& spans);
 
-/// a ∩ b into out (cleared first).
+/// a ∩ b into out (cleared first). `a` and `b` are each sorted and disjoint.
 void intersect(const SpanList& a, const SpanList& b, SpanList& out);
 
 /// a − b into out (cleared first).

@@ -99,8 +99,7 @@ Expr translate(const Expr& f, const Vec3d& offset) {
 }
 
 Expr rotate_degrees(const Expr& f, const Vec3d& angles) {
-    const Mat4 d = Mat4::rotate_degrees({0, 0, 1}, angles.z) * Mat4::rotate_degrees({0, 1, 0}, angles.y) *
-                   Mat4::rotate_degrees({1, 0, 0}, angles.x);
+    const Mat4 d = Mat4::rotate_xyz_degrees(angles);
     return transform(f, d.transpose());  // a rotation's inverse is its transpose, exactly
 }
 

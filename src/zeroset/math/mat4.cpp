@@ -148,6 +148,20 @@ Box3 Mat4::transform_box(const Box3& box) const {
     return {lo - pad, hi + pad};
 }
 
+Mat4 Mat4::rotate_xyz_degrees(const Vec3d& angles) {
+    return rotate_degrees({0, 0, 1}, angles.z) * rotate_degrees({0, 1, 0}, angles.y) *
+           rotate_degrees({1, 0, 0}, angles.x);
+}
+
+double Mat4::squareness() const {
+    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    double columns = 1.0;
+    for (int j = 0; j < 3; ++j) columns *= std::hypot(m[0][j], m[1][j], m[2][j]);
+    return columns > 0.0 ? std::abs(det) / columns : 0.0;
+}
+
 double Mat4::max_stretch() const {
     double most = 0.0;
     for (int j = 0; j < 3; ++j) most = std::max(most, std::hypot(m[0][j], m[1][j], m[2][j]));

@@ -21,6 +21,8 @@ struct Mat4 {
     /// The same in degrees, with exact sines and cosines at multiples of 90°
     /// (a quarter turn about z takes x exactly to y).
     static Mat4 rotate_degrees(const Vec3d& axis, double degrees);
+    /// Rotation about x by angles.x degrees, then about y, then about z.
+    static Mat4 rotate_xyz_degrees(const Vec3d& angles);
 
     [[nodiscard]] Mat4 operator*(const Mat4& o) const;
     [[nodiscard]] Mat4 transpose() const;
@@ -42,6 +44,10 @@ struct Mat4 {
     /// may stretch a length, to within a factor of √3.
     [[nodiscard]] double max_stretch() const;
     [[nodiscard]] bool is_identity() const { return *this == identity(); }
+    /// |det A| over the product of A's column lengths, for the linear part
+    /// A: 1 for a rotation or any scale, 0 for a map that flattens space —
+    /// how far from singular the map is, whatever its size.
+    [[nodiscard]] double squareness() const;
 
     friend bool operator==(const Mat4&, const Mat4&) = default;
 };

@@ -26,6 +26,8 @@ std::string summary_line(const RenderStats& s) {
                   count(s.counters.evaluations()).c_str(), count(s.counters.point_evaluations).c_str(),
                   count(s.counters.interval_evaluations).c_str(), count(s.counters.gradient_evaluations).c_str());
     std::string line = buffer;
+    if (s.counters.failed_queries > 0)
+        line += "; " + count(s.counters.failed_queries) + " ray queries failed (a method's budget spent: no hit there)";
     if (!s.methods.empty()) {
         line += "; objects:";
         for (std::size_t i = 0; i < s.methods.size(); ++i)

@@ -9,6 +9,9 @@ namespace zeroset {
 SceneTracer::SceneTracer(const PreparedScene& prepared)
     : prepared_(&prepared), scratch_(prepared.leaves().size()) {}
 
+/// The leaf's outward normal (flipped for a subtracted solid's surface),
+/// brought to the scene's space — and then turned to face the ray, since
+/// Blinn–Phong shades both sides of a surface alike.
 Vec3d SceneTracer::normal_at(const SurfaceRef& surface, const Ray& ray) {
     Vec3d n;
     if (surface.leaf) {
@@ -34,7 +37,7 @@ std::string nan_message(const TraceScratch::NanRecord& nan) {
     message.precision(6);
     message << "the surface of object '" << nan.leaf->name() << "' evaluates to NaN at (" << nan.point.x << ", "
             << nan.point.y << ", " << nan.point.z
-            << ") — a function outside its domain there (sqrt or log of a negative number, 0/0, …); "
+            << ") (in the object's own coordinates, before its transforms) — a function outside its domain there (sqrt or log of a negative number, 0/0, …); "
                "fix the expression or tighten the bounds";
     return message.str();
 }

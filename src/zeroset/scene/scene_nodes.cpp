@@ -30,10 +30,6 @@ bool is_one_of(std::span<const std::string_view> names, const Token& token) {
     return token.kind == TokenKind::Name && std::ranges::find(names, token.text) != names.end();
 }
 
-std::string at_line(SourceLocation where) {
-    return "line " + std::to_string(where.line) + ", column " + std::to_string(where.column);
-}
-
 /// A SceneError with a note on where it was reached from appended.
 SceneError with_note(const SceneError& e, const std::string& note) {
     if (e.line() == 0) return SceneError(e.file(), e.message() + " (" + note + ")");
@@ -77,50 +73,33 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
     bool has_surface = false;
     std::vector<std::string_view> keys(object_keys.begin(), object_keys.end());
     keys.insert(keys.end(), transform_keys.begin(), transform_keys.end());
-    const std::string block_name(keyword.text);
-    in_->expect(TokenKind::LeftBrace);
-    std::map<std::string_view, SourceLocation> seen;
-    while (!in_->accept(TokenKind::RightBrace)) {
-        const Token& key = in_->peek();
-        if (key.kind == TokenKind::End)
-            in_->fail(key.where, "expected '}' to close the object block opened at " + at_line(keyword.where) +
-                                     ", but found end of file");
-        if (!is_one_of(keys, key))
-            in_->fail(key.where, key.kind == TokenKind::Name
-                                     ? "unknown key '" + std::string(key.text) + "' in the object block (expected " +
-                                           join_words(keys, "or") + ")"
-                                     : "expected a key (" + join_words(keys, "or") + ") or '}' but found " +
-                                           describe(key));
-        in_->next();
-        if (is_one_of(transform_keys, key)) {
-            node->transform = transform(key) * node->transform;  // applied after the ones before it
-            continue;
-        }
-        if (const auto first = seen.find(key.text); first != seen.end())
-            in_->fail(key.where, "'" + std::string(key.text) + "' is already set in this object block (at " +
-                                     at_line(first->second) + ")");
-        seen.emplace(key.text, key.where);
-        if (key.text == "surface") {
-            const auto [surface, where] = value();
-            if (surface.is_vector())
-                in_->fail(where, "the surface must be a number (an expression in x, y, z), but found a vector");
-            if (surface.number().is_constant_valued())
-                in_->fail(where, "the surface must depend on x, y or z, but it is the constant " +
-                                     format_number(surface.number().value()));
-            object.surface = surface.number();
-            has_surface = true;
-        } else if (key.text == "bounds") {
-            object.bounds = bounds();
-        } else if (key.text == "method") {
-            object.method = method();
-        } else if (key.text == "solver") {
-            object.solver = polynomial_solver();
-        } else if (key.text == "normals") {
-            object.normals = normal_mode();
-        } else {
-            node->material = material(key);
-        }
-    }
+    block(
+        keyword, keys,
+        [&](const Token& key) {
+            if (is_one_of(transform_keys, key)) {
+                add_transform(key, *node);
+            } else if (key.text == "surface") {
+                const auto [surface, where] = value();
+                if (surface.is_vector())
+                    in_->fail(where, "the surface must be a number (an expression in x, y, z), but found a vector");
+                if (surface.number().is_constant_valued())
+                    in_->fail(where, "the surface must depend on x, y or z, but it is the constant " +
+                                         format_number(surface.number().value()));
+                object.surface = surface.number();
+                has_surface = true;
+            } else if (key.text == "bounds") {
+                object.bounds = bounds();
+            } else if (key.text == "method") {
+                object.method = method();
+            } else if (key.text == "solver") {
+                object.solver = polynomial_solver();
+            } else if (key.text == "normals") {
+                object.normals = normal_mode();
+            } else {
+                node->material = material(key);
+            }
+        },
+        transform_keys);
     if (!has_surface) in_->fail(keyword.where, "an object needs a surface");
     return node;
 }
@@ -130,7 +109,7 @@ SceneNodePtr SceneParser::composite(const Token& keyword, SceneNode::Kind kind) 
     node->kind = kind;
     if (in_->at(TokenKind::String)) node->name = in_->next().text;
     in_->expect(TokenKind::LeftBrace);
-    node_body(keyword, *node);
+    node_body(keyword.text, keyword.where, *node);
     if (kind != SceneNode::Kind::Group && node->children.empty())
         in_->fail(keyword.where, std::string(kind == SceneNode::Kind::Intersection ? "an " : "a ") +
                                      std::string(keyword.text) + " needs at least one object, group or instance");
@@ -161,23 +140,23 @@ bool SceneParser::child_entry(SceneNode& node) {
     return false;
 }
 
-void SceneParser::node_body(const Token& keyword, SceneNode& node) {
+void SceneParser::node_body(std::string_view what, SourceLocation opened_at, SceneNode& node) {
     std::optional<SourceLocation> material_at;
     while (!in_->accept(TokenKind::RightBrace)) {
         const Token& entry = in_->peek();
         if (entry.kind == TokenKind::End)
-            in_->fail(entry.where, "expected '}' to close the " + std::string(keyword.text) + " block opened at " +
-                                       at_line(keyword.where) + ", but found end of file");
+            in_->fail(entry.where, "expected '}' to close the " + std::string(what) + " block opened at " +
+                                       line_and_column(opened_at) + ", but found end of file");
         if (child_entry(node)) continue;
         if (is_one_of(transform_keys, entry)) {
             in_->next();
-            node.transform = transform(entry) * node.transform;  // applied after the ones before it
+            add_transform(entry, node);
             continue;
         }
         if (entry.kind == TokenKind::Name && entry.text == "material") {
             if (material_at)
-                in_->fail(entry.where, "'material' is already set in this " + std::string(keyword.text) + " block (at " +
-                                           at_line(*material_at) + ")");
+                in_->fail(entry.where, "'material' is already set in this " + std::string(what) + " block (at " +
+                                           line_and_column(*material_at) + ")");
             material_at = entry.where;
             in_->next();
             node.material = material(entry);
@@ -193,7 +172,7 @@ void SceneParser::skip_block(std::string_view what) {
     for (int level = 1; level > 0;) {
         const Token& t = in_->next();
         if (t.kind == TokenKind::End)
-            in_->fail(t.where, "expected '}' to close the " + std::string(what) + " opened at " + at_line(open.where) +
+            in_->fail(t.where, "expected '}' to close the " + std::string(what) + " opened at " + line_and_column(open.where) +
                                    ", but found end of file");
         if (t.kind == TokenKind::LeftBrace) ++level;
         if (t.kind == TokenKind::RightBrace) --level;
@@ -254,62 +233,55 @@ SceneNodePtr SceneParser::instance(const Token& keyword) {
         key.push_back(nullptr);  // separates the arguments
     }
     ShapeDefinition::Reading& reading = definition->read[key];
-    SceneNodePtr& shape = reading.node;
-    if (!shape) {
+    if (!reading.node) {
         reading.arguments = arguments;
-        // Read the body where it is written, seeing what was visible there.
-        TokenStream* const outer = std::exchange(in_, definition->stream);
-        std::filesystem::path outer_dir = std::exchange(dir_, definition->dir);
-        const std::size_t resume = in_->position();
         try {
+            // Read the body where it is written, seeing what was visible there.
+            const Detour detour(*this, *definition);
             const Scope::Frame frame(scope_, definition->visible);
             for (std::size_t i = 0; i < arguments.size(); ++i)
                 scope_.define(definition->parameters[i], {arguments[i], "a parameter of shape " + definition->name});
-            in_->seek(definition->body);
-            const Token& open = in_->next();
+            const Token& open = in_->next();  // the body's '{'
             auto node = std::make_shared<SceneNode>();
             node->name = definition->name;
-            node_body(open, *node);
-            shape = std::move(node);
+            node_body("shape " + definition->name, open.where, *node);
+            reading.node = std::move(node);
         } catch (const SceneError& e) {
-            in_->seek(resume);
-            in_ = outer;
-            dir_ = std::move(outer_dir);
             definition->read.erase(key);
             throw with_note(e, "in shape '" + definition->name + "' placed at " +
                                    format_location(in_->file_name(), name.where));
         }
-        in_->seek(resume);
-        in_ = outer;
-        dir_ = std::move(outer_dir);
     }
     auto node = std::make_shared<SceneNode>();
     node->kind = SceneNode::Kind::Group;
     node->name = definition->name;
-    node->children.push_back(shape);
-    if (in_->accept(TokenKind::LeftBrace)) {
-        std::optional<SourceLocation> material_at;
-        while (!in_->accept(TokenKind::RightBrace)) {
-            const Token& entry = in_->peek();
-            if (is_one_of(transform_keys, entry)) {
-                in_->next();
-                node->transform = transform(entry) * node->transform;
-            } else if (entry.kind == TokenKind::Name && entry.text == "material") {
-                if (material_at)
-                    in_->fail(entry.where, "'material' is already set in this instance block (at " +
-                                               at_line(*material_at) + ")");
-                material_at = entry.where;
-                in_->next();
-                node->material = material(entry);
-            } else {
-                if (entry.kind == TokenKind::End)
-                    in_->fail(entry.where, "expected '}' to close the instance block opened at " +
-                                               at_line(keyword.where) + ", but found end of file");
-                in_->fail_expected("a transform (translate, rotate, scale, shear, matrix), material or '}'");
-            }
-        }
+    node->children.push_back(reading.node);
+    if (in_->at(TokenKind::LeftBrace)) {
+        std::vector<std::string_view> keys(transform_keys.begin(), transform_keys.end());
+        keys.push_back("material");
+        block(
+            keyword, keys,
+            [&](const Token& entry) {
+                if (entry.text == "material") node->material = material(entry);
+                else add_transform(entry, *node);
+            },
+            transform_keys);
     }
     return node;
+}
+
+SceneParser::Detour::Detour(SceneParser& parser, const ShapeDefinition& to)
+    : parser_(parser),
+      stream_(std::exchange(parser.in_, to.stream)),
+      dir_(std::exchange(parser.dir_, to.dir)),
+      position_(to.stream->position()) {
+    to.stream->seek(to.body);
+}
+
+SceneParser::Detour::~Detour() {
+    parser_.in_->seek(position_);
+    parser_.in_ = stream_;
+    parser_.dir_ = std::move(dir_);
 }
 
 void SceneParser::loop(const Token& keyword, const std::function<void()>& body) {

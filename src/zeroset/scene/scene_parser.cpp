@@ -30,10 +30,6 @@ bool contains(std::span<const std::string_view> names, std::string_view name) {
     return std::ranges::find(names, name) != names.end();
 }
 
-std::string line_and_column(SourceLocation where) {
-    return "line " + std::to_string(where.line) + ", column " + std::to_string(where.column);
-}
-
 /// The names method_from_name() accepts.
 std::vector<std::string_view> method_names() {
     std::vector<std::string_view> names;
@@ -286,7 +282,8 @@ NormalMode SceneParser::normal_mode() {
 }
 
 void SceneParser::block(const Token& keyword, std::span<const std::string_view> keys,
-                        const std::function<void(const Token& key)>& on_key) {
+                        const std::function<void(const Token& key)>& on_key,
+                        std::span<const std::string_view> repeatable) {
     const std::string block_name(keyword.text);
     const std::string expected_keys = join_words(keys, "or");
     in_->expect(TokenKind::LeftBrace);
@@ -300,10 +297,12 @@ void SceneParser::block(const Token& keyword, std::span<const std::string_view> 
         if (!contains(keys, key.text))
             in_->fail(key.where, "unknown key '" + std::string(key.text) + "' in the " + block_name +
                                      " block (expected " + expected_keys + ")");
-        if (const auto first = seen.find(key.text); first != seen.end())
-            in_->fail(key.where, "'" + std::string(key.text) + "' is already set in this " + block_name +
-                                     " block (at " + line_and_column(first->second) + ")");
-        seen.emplace(key.text, key.where);
+        if (!contains(repeatable, key.text)) {
+            if (const auto first = seen.find(key.text); first != seen.end())
+                in_->fail(key.where, "'" + std::string(key.text) + "' is already set in this " + block_name +
+                                         " block (at " + line_and_column(first->second) + ")");
+            seen.emplace(key.text, key.where);
+        }
         in_->next();
         on_key(key);
     }

@@ -82,10 +82,12 @@ private:
     Method method();
     PolynomialSolver polynomial_solver();
     NormalMode normal_mode();
-    /// Reads `{ key value … }`: keys from `keys`, each at most once, in any
-    /// order; `on_key` reads the value of the key just consumed.
+    /// Reads `{ key value … }`: keys from `keys`, each at most once unless it
+    /// is `repeatable`, in any order; `on_key` reads the value of the key
+    /// just consumed.
     void block(const Token& keyword, std::span<const std::string_view> keys,
-               const std::function<void(const Token& key)>& on_key);
+               const std::function<void(const Token& key)>& on_key,
+               std::span<const std::string_view> repeatable = {});
     /// Records the first `keyword` statement of its kind; fails on a second.
     void once(std::optional<std::string>& first, const Token& keyword, std::string_view what);
     /// Fails unless `name` may be bound here (not built in, not bound yet).
@@ -118,9 +120,27 @@ private:
     void loop(const Token& keyword, const std::function<void()>& body);
     /// Reads a block's entries up to its '}': child nodes, loops and lets
     /// into `node`'s children, its transforms and material into `node`.
-    void node_body(const Token& keyword, SceneNode& node);
-    /// Reads one `translate …`, `rotate …`, … after its keyword (transforms.cpp).
-    Mat4 transform(const Token& keyword);
+    void node_body(std::string_view what, SourceLocation opened_at, SceneNode& node);
+    /// While it lives, the parser reads a shape's body where it is written
+    /// (its file, at its '{', paths relative to its directory); then it goes
+    /// back to where it was, whether the body was read or threw.
+    class Detour {
+    public:
+        Detour(SceneParser& parser, const ShapeDefinition& to);
+        ~Detour();
+        Detour(const Detour&) = delete;
+        Detour& operator=(const Detour&) = delete;
+
+    private:
+        SceneParser& parser_;
+        TokenStream* stream_;
+        std::filesystem::path dir_;
+        std::size_t position_;
+    };
+    /// Reads one `translate …`, `rotate …`, … after its keyword and applies
+    /// it after the node's earlier ones, refusing a singular map (transforms.cpp).
+    void add_transform(const Token& keyword, SceneNode& node);
+    Mat4 read_transform(const Token& keyword);
     /// Counts one level of nested blocks while it lives; fails past the limit.
     class Nesting;
 

@@ -3,7 +3,6 @@
 // its parent's. Every one must be invertible — rays are moved by the inverse.
 #include <array>
 #include <cmath>
-#include <numbers>
 
 #include "zeroset/scene/constant_value.hpp"
 #include "zeroset/scene/scene_parser.hpp"
@@ -15,26 +14,32 @@ namespace {
 
 constexpr std::array<std::string_view, 6> shear_keys{"xy", "xz", "yx", "yz", "zx", "zy"};
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
-double determinant3(const Mat4& m) {
-    const auto& a = m.m;
-    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-}
+/// A map this close to flattening space (Mat4::squareness) is refused: its
+/// inverse would lose most of the digits of every moved ray.
+constexpr double least_squareness = 1e-9;
 
 }  // namespace
 
-Mat4 SceneParser::transform(const Token& keyword) {
+void SceneParser::add_transform(const Token& keyword, SceneNode& node) {
+    // Applied after the node's earlier transforms; each one, and so what
+    // they make together, must be invertible.
+    const Mat4 m = read_transform(keyword);
+    for (const Mat4& check : {m, m * node.transform}) {
+        const double squareness = check.squareness();
+        if (!(squareness > least_squareness) || !std::isfinite(squareness))
+            in_->fail(keyword.where, std::string(keyword.text) +
+                                         ": the transform is singular or nearly so (|det| / column lengths = " +
+                                         format_number(squareness) + "); it would flatten the object");
+    }
+    node.transform = m * node.transform;
+}
+
+Mat4 SceneParser::read_transform(const Token& keyword) {
     const std::string_view k = keyword.text;
     if (k == "translate") return Mat4::translate(vector("the translation").value);
     if (k == "rotate") {
         const auto [v, where] = value();
-        if (v.is_vector()) {
-            const Vec3d a = constant_vector(*in_, v, where, "the rotation angles");
-            return Mat4::rotate({0, 0, 1}, radians(a.z)) * Mat4::rotate({0, 1, 0}, radians(a.y)) *
-                   Mat4::rotate({1, 0, 0}, radians(a.x));
-        }
+        if (v.is_vector()) return Mat4::rotate_xyz_degrees(constant_vector(*in_, v, where, "the rotation angles"));
         const double angle = constant_number(*in_, v, where, "the rotation angle");
         const Token& word = in_->peek();
         if (word.kind != TokenKind::Name || word.text != "around")
@@ -42,7 +47,7 @@ Mat4 SceneParser::transform(const Token& keyword) {
         in_->next();
         const auto [axis, axis_at] = vector("the rotation axis");
         if (!(length(axis) > 0.0)) in_->fail(axis_at, "the rotation axis must not be zero");
-        return Mat4::rotate(axis, radians(angle));
+        return Mat4::rotate_degrees(axis, angle);
     }
     if (k == "scale") {
         const auto [v, where] = value();
@@ -60,19 +65,16 @@ Mat4 SceneParser::transform(const Token& keyword) {
             m.m[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] =
                 number("shear " + std::string(key.text)).value;
         });
-    } else {  // matrix (m00, m01, m02, m03, m10, …, m23): p' = A·p + t, row by row
-        in_->expect(TokenKind::LeftParen);
-        for (std::size_t i = 0; i < 12; ++i) {
-            if (i > 0 && !in_->accept(TokenKind::Comma))
-                in_->fail_expected("',' (a matrix has 12 numbers: 3 rows of A, each followed by its t)");
-            m.m[i / 4][i % 4] = number("a matrix entry").value;
-        }
-        in_->expect(TokenKind::RightParen);
+        return m;
     }
-    const double det = determinant3(m);
-    if (!(std::abs(det) > 1e-12) || !std::isfinite(det))
-        in_->fail(keyword.where, std::string(k) + ": the transform is singular (determinant " + format_number(det) +
-                                     "); it would flatten the object");
+    // matrix (m00, m01, m02, m03, m10, …, m23): p' = A·p + t, row by row
+    in_->expect(TokenKind::LeftParen);
+    for (std::size_t i = 0; i < 12; ++i) {
+        if (i > 0 && !in_->accept(TokenKind::Comma))
+            in_->fail_expected("',' (a matrix has 12 numbers: 3 rows of A, each followed by its t)");
+        m.m[i / 4][i % 4] = number("a matrix entry").value;
+    }
+    in_->expect(TokenKind::RightParen);
     return m;
 }
 

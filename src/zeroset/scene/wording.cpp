@@ -27,4 +27,8 @@ std::string join_words(std::span<const std::string_view> words, std::string_view
     return text;
 }
 
+std::string line_and_column(SourceLocation where) {
+    return "line " + std::to_string(where.line) + ", column " + std::to_string(where.column);
+}
+
 }  // namespace zeroset

@@ -7,6 +7,10 @@
 
 namespace zeroset {
 
+namespace {
+double far_end(Span span) { return std::max(std::abs(span.t0), std::abs(span.t1)); }
+}  // namespace
+
 SphereMethod::SphereMethod(const RootFinderSettings& settings) : tracer_({settings.sphere_epsilon, 16}) {}
 
 std::optional<double> SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCounters& counters) {
@@ -14,8 +18,9 @@ std::optional<double> SphereMethod::crossing(RayFunction& h, Span span, double s
     const auto t = tracer_.first_crossing(h, span, side, counters);
     if (!t || counters.nan_evaluations != nans) return std::nullopt;
     // The surface is crossed in [t, t + 2ε]: refine to full precision. With
-    // no sign change before t1, the crossing lies just past the span.
-    const double end = std::min(*t + 2.0 * tracer_.step_epsilon(h, *t), span.t1);
+    // no sign change before t1, the crossing lies just past the span. (ε as
+    // the march took it: at the span's far end, its largest.)
+    const double end = std::min(*t + 2.0 * tracer_.step_epsilon(h, far_end(span)), span.t1);
     return refine_sign_change(h, *t, end, counters);
 }
 
@@ -39,9 +44,13 @@ HitStatus SphereMethod::all_hits(RayFunction& h, Span span, std::vector<double>&
         const auto root = crossing(h, {t, span.t1}, side, counters);
         if (!root) break;
         hits.push_back(*root);
-        // Resume just past the root, on the other side of the surface.
-        t = std::max(*root, t) + 2.0 * tracer_.step_epsilon(h, *root);
-        side = -side;
+        // Resume just past the root, on whichever side the ray is there: a
+        // chord or a wall thinner than 2ε leaves it where it was.
+        t = std::max(*root, t) + 2.0 * tracer_.step_epsilon(h, far_end(span));
+        if (t >= span.t1) break;
+        const double past = h.value(t, counters);
+        if (std::isnan(past)) break;
+        side = past > 0.0 ? 1.0 : -1.0;
     }
     if (counters.nan_evaluations != nans) return HitStatus::Failed;
     return hits.size() > before ? HitStatus::Ok : HitStatus::NoHit;

@@ -11,6 +11,7 @@ struct TraceCounters {
     std::uint64_t interval_evaluations = 0;  // f over a box
     std::uint64_t gradient_evaluations = 0;  // f and ∇f over a box (for a Lipschitz bound)
     std::uint64_t nan_evaluations = 0;       // point evaluations that gave NaN
+    std::uint64_t failed_queries = 0;        // ray queries a method gave up on (a budget spent), answered "no hit"
 
     [[nodiscard]] std::uint64_t evaluations() const {
         return point_evaluations + interval_evaluations + gradient_evaluations;
@@ -21,6 +22,7 @@ struct TraceCounters {
         interval_evaluations += o.interval_evaluations;
         gradient_evaluations += o.gradient_evaluations;
         nan_evaluations += o.nan_evaluations;
+        failed_queries += o.failed_queries;
         return *this;
     }
 };
