@@ -18,6 +18,7 @@
 #include "support/ray_suite.hpp"
 #include "support/ray_suite_surfaces.hpp"
 #include "zeroset/expr/evaluator.hpp"
+#include "zeroset/trace/polynomial_method.hpp"
 #include "zeroset/trace/root_finder.hpp"
 #include "zeroset/trace/sphere_tracer.hpp"
 
@@ -286,6 +287,50 @@ void expect_strict(Method method, double s) {
 
 TEST_P(RaySuiteScaled, IntervalMethodNeverMissesAndIsExact) { expect_strict(Method::Interval, GetParam()); }
 TEST_P(RaySuiteScaled, LgMethodNeverMissesAndIsExact) { expect_strict(Method::Lg, GetParam()); }
+
+// The polynomial method on the suite's polynomial surfaces: no miss, no late
+// hit, and an early hit (or one without a root) only where |H| is within
+// twice its proven rounding bound B on the ray — where the arithmetic cannot
+// tell H from 0 (trace/polynomial_method.hpp).
+TEST_P(RaySuiteScaled, PolynomialMethodNeverMissesOnPolynomialSurfaces) {
+    const double s = GetParam();
+    std::map<std::string, std::unique_ptr<Tape>> tapes;
+    int rays = 0, unresolved = 0;
+    for (const SuiteRay& r : suite()) {
+        auto& tape = tapes[r.surface];
+        if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
+        if (!tape->is_polynomial()) continue;
+        ++rays;
+        const RootFinderSettings settings = settings_for_scale(r.scale);
+        PolynomialMethod method(*tape, settings);
+        RayFunction h(*tape);
+        h.set_ray(scaled_ray(r, s));
+        TraceCounters counters;
+        HitResult hit = method.first_hit(h, scaled_span(r, s), counters);
+        if (hit.t) *hit.t *= s;
+        const bool well_conditioned = r.kind == RefKind::Simple && r.slope >= 1e-6;
+        const double tolerance = (well_conditioned ? 1e-9 : 1e-7) * r.scale;
+        if (r.t_ref && !hit.t) {
+            ADD_FAILURE() << "polynomial missed: " << describe(r);
+            continue;
+        }
+        if (!hit.t) continue;
+        if (r.t_ref && *hit.t > *r.t_ref + tolerance) {
+            ADD_FAILURE() << "polynomial hit after the first root: " << describe(r) << " hit=" << *hit.t;
+            continue;
+        }
+        if (r.t_ref && *hit.t >= *r.t_ref - tolerance) continue;
+        ++unresolved;
+        RayFunction unscaled(*tape);
+        unscaled.set_ray(r.ray);
+        const double bound = method.rounding_bound(scaled_ray(r, s), scaled_span(r, s));
+        EXPECT_LE(std::abs(unscaled.value(*hit.t, counters)), 2.0 * bound)
+            << "polynomial hit early where H is not 0: " << describe(r) << " hit=" << *hit.t;
+    }
+    std::printf("polynomial |x_d| = %g: %d rays on polynomial surfaces, 0 misses, %d hits where |H| <= 2B\n", s, rays,
+                unresolved);
+    EXPECT_GT(rays, 2000);
+}
 
 std::string scale_name(const ::testing::TestParamInfo<double>& param) {
     constexpr std::array<const char*, direction_scales.size()> names{"unit", "times_0_37", "times_1e_3", "times_1e3"};

@@ -20,7 +20,7 @@ PreparedScene::PreparedScene(const Scene& scene, const ObjectOverrides& override
     std::vector<std::shared_ptr<const Primitive>> top;
     top.reserve(scene.nodes.size());
     for (const SceneNodePtr& node : scene.nodes) top.push_back(prepare(node));
-    root_ = std::make_shared<Group>(std::move(top));
+    root_ = top.size() == 1 ? top.front() : std::make_shared<Group>(std::move(top));
     prepared_.clear();
 }
 
