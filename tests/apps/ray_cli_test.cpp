@@ -272,3 +272,23 @@ TEST_F(RayCli, HelpExplainsTheCommand) {
 }
 
 }  // namespace
+
+namespace {
+
+// An object placed by transforms (inside a shape and an instance) is probed
+// in its own space: the ray from the scene is moved, the t values stay.
+TEST_F(RayCli, TransformedObjectIsProbedInItsOwnSpace) {
+    dir_.write("moved.zs",
+          "shape ball { object \"ball\" { surface x^2 + y^2 + z^2 - 1  bounds box((-1, -1, -1), (1, 1, 1))  scale 0.5 } }\n"
+          "group { instance ball { translate (3, 0, 0) } }\n");
+    const Outcome r = run("ray moved.zs --object ball --origin 0,0,0 --dir 1,0,0 --method interval --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto rays = parse_json_lines(r.out);
+    ASSERT_EQ(rays.size(), 1u);
+    const MethodEntry& m = rays[0].methods.at("interval");
+    ASSERT_EQ(m.hits.size(), 2u);
+    EXPECT_NEAR(m.hits[0], 2.5, 1e-12);  // the ball of radius 0.5 at x = 3, in the scene's t
+    EXPECT_NEAR(m.hits[1], 3.5, 1e-12);
+}
+
+}  // namespace
