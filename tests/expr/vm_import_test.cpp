@@ -213,3 +213,34 @@ TEST(VmImport, FidgetRoundingAndTrigonometry) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(VmImport, ConstantsMustBeFiniteAndNamesDefinedOnce) {
+    for (const char* bad : {"nan", "inf", "-inf", "1e999"}) {
+        const VmImportError e = error_for(std::string("_0 var-x\n_1 const ") + bad + "\n_2 add _0 _1\n");
+        EXPECT_EQ(e.line(), 2) << bad;
+        EXPECT_EQ(e.column(), 10) << bad;
+    }
+    const VmImportError twice = error_for("_0 var-x\n_1 const 2\n_0 mul _0 _1\n");
+    EXPECT_EQ(twice.line(), 3);
+    EXPECT_EQ(twice.column(), 1);
+    EXPECT_NE(std::string(twice.what()).find("already defined (line 1)"), std::string::npos) << twice.what();
+}
+
+TEST(VmImport, AnyLineEndingWorks) {
+    for (const char* end : {"\n", "\r\n", "\r"}) {
+        const std::string text = std::string("_0 var-x") + end + "_1 const 2" + end + "_2 mul _0 _1" + end;
+        const Tape tape(parse(text));
+        Evaluator<double> f(tape);
+        EXPECT_EQ(f(3.0, 0.0, 0.0), 6.0);
+    }
+    // A file whose last line has no ending at all.
+    const Tape tape(parse("_0 var-x\r_1 neg _0"));
+    Evaluator<double> f(tape);
+    EXPECT_EQ(f(3.0, 0.0, 0.0), -3.0);
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -240,3 +240,37 @@ TEST(Renderer, OnlyAPlaneMayGoWithoutBounds) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+// A surface that is NaN where rays look is an error under every method —
+// the polynomial method too, whose F(t) then has NaN coefficients.
+TEST(Renderer, NanSurfaceIsAnErrorUnderEveryMethod) {
+    const Expr ball = square(var_x()) + square(var_y()) + square(var_z()) - 1.0;
+    const Expr nan = Expr(0.0) / Expr(0.0);
+    struct Case {
+        Expr f;
+        bool polynomial;
+    };
+    for (const Case& c : {Case{ball + nan, true}, Case{nan * var_x(), true}, Case{sqrt(var_x()) + ball, false}}) {
+        for (const Method m : {Method::Auto, Method::Polynomial, Method::Interval, Method::Lg, Method::Sphere}) {
+            if (m == Method::Polynomial && !c.polynomial) continue;
+            Scene scene;
+            Object o;
+            o.surface = c.f;
+            o.bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
+            o.method = m;
+            scene.nodes.push_back(make_object_node(o, "bad"));
+            try {
+                render(scene, small());
+                ADD_FAILURE() << "no error for " << c.f.to_string() << " with " << method_name(m);
+            } catch (const RenderError& e) {
+                EXPECT_NE(std::string(e.what()).find("NaN"), std::string::npos) << e.what();
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -7,6 +7,7 @@
 #include "zeroset/expr/vm_import.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
@@ -61,15 +62,36 @@ const Composite* composite_opcode(std::string_view name) {
     return nullptr;
 }
 
+/// The next line of the stream, ended by "\n", "\r\n" or a lone "\r"
+/// (files from old Macs): false at the end.
+bool next_line(std::istream& in, std::string& line) {
+    line.clear();
+    bool any = false;
+    for (int c; (c = in.get()) != std::char_traits<char>::eof();) {
+        any = true;
+        if (c == '\n') return true;
+        if (c == '\r') {
+            if (in.peek() == '\n') in.get();
+            return true;
+        }
+        line.push_back(static_cast<char>(c));
+    }
+    return any;
+}
+
 }  // namespace
 
 Expr import_vm(std::istream& in) {
-    std::unordered_map<std::string, Expr> values;
+    struct Defined {
+        Expr value;
+        int line;
+    };
+    std::unordered_map<std::string, Defined> values;
     std::string line;
     int line_number = 0;
     bool have_output = false;
     Expr output;
-    while (std::getline(in, line)) {
+    while (next_line(in, line)) {
         ++line_number;
         const std::vector<Token> tokens = split(line);
         if (tokens.empty()) continue;
@@ -84,7 +106,7 @@ Expr import_vm(std::istream& in) {
             if (k >= tokens.size()) throw fail(tokens[1], "`" + std::string(opcode) + "` is missing an operand");
             const auto it = values.find(std::string(tokens[k].text));
             if (it == values.end()) throw fail(tokens[k], "unknown value `" + std::string(tokens[k].text) + "`");
-            return it->second;
+            return it->second.value;
         };
         const auto expect_count = [&](std::size_t count) {
             if (tokens.size() != count + 2)
@@ -100,6 +122,7 @@ Expr import_vm(std::istream& in) {
             const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), c);
             if (error != std::errc() || end != text.data() + text.size())
                 throw fail(tokens[2], "invalid number `" + std::string(text) + "`");
+            if (!std::isfinite(c)) throw fail(tokens[2], "a constant must be finite, not `" + std::string(text) + "`");
             value = Expr(c);
         } else if (opcode == "var-x" || opcode == "var-y" || opcode == "var-z") {
             expect_count(0);
@@ -122,7 +145,10 @@ Expr import_vm(std::istream& in) {
         } else {
             throw fail(tokens[1], "unknown opcode `" + std::string(opcode) + "`");
         }
-        values[name] = value;
+        if (const auto earlier = values.find(name); earlier != values.end())
+            throw fail(tokens[0], "`" + name + "` is already defined (line " + std::to_string(earlier->second.line) +
+                                      "); a name is defined once");
+        values.emplace(name, Defined{value, line_number});
         output = value;
         have_output = true;
     }

@@ -41,6 +41,19 @@ CentredSpan centre(Span span) {
     return {t_c, std::min(span.t0 - t_c, 0.0), std::max(span.t1 - t_c, 0.0)};
 }
 
+/// False, with the NaN recorded in h like every method records it, when a
+/// coefficient of F̂ is not finite: f is NaN (0/0 folded into a constant) or
+/// overflows along the ray, and no root of it means anything.
+bool defined_along(RayFunction& h, std::span<const double> f, const CentredSpan& c, TraceCounters& counters) {
+    for (const double coefficient : f) {
+        if (!std::isfinite(coefficient)) {
+            h.note_nan(h.ray().at(c.t_c), counters);
+            return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 PolynomialMethod::PolynomialMethod(const Tape& tape, const RootFinderSettings& settings)
@@ -74,8 +87,8 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
     const CentredSpan c = centre(span);
     program_.evaluate(h.ray(), c.t_c);
     const std::span<const double> value = program_.value();
+    if (!defined_along(h, value, c, counters)) return {std::nullopt, HitStatus::Failed};
     const double start = horner(value, c.s0).value;
-    if (std::isnan(start)) return {std::nullopt, HitStatus::Failed};
     if (start <= 0.0) return {span.t0, HitStatus::Ok};  // the ray starts in the solid
     const auto hit_at = [&](double s) { return HitResult{std::clamp(c.t_c + s, span.t0, span.t1), HitStatus::Ok}; };
 
@@ -132,6 +145,7 @@ HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<doub
     const CentredSpan c = centre(span);
     program_.evaluate(h.ray(), c.t_c);
     const std::span<const double> value = program_.value();
+    if (!defined_along(h, value, c, counters)) return HitStatus::Failed;
     std::array<double, RayPolynomialProgram::max_degree> roots{};
     int count = 0;
     if (!program_.error_known()) {  // no bound to guard with: F̂'s roots

@@ -12,7 +12,7 @@ RayFunction::RayFunction(const Tape& tape)
 
 void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;
-    const double length = std::sqrt(dot(ray.dir, ray.dir));
+    const double length = std::hypot(ray.dir.x, ray.dir.y, ray.dir.z);  // no underflow for tiny directions
     dir_length_ = length > 0.0 ? rounding::up(length) : 0.0;
     use_full_tape();
 }
