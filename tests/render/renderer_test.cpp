@@ -274,3 +274,20 @@ TEST(Renderer, NanSurfaceIsAnErrorUnderEveryMethod) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Renderer, AColourPastTheLargestFloatIsAnError) {
+    Scene scene = blinn_scene();
+    scene.lights[0].color = {1e300, 1e300, 1e300};
+    try {
+        render(scene, small());
+        FAIL() << "expected a RenderError";
+    } catch (const RenderError& e) {
+        EXPECT_NE(std::string(e.what()).find("has no finite colour"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace zeroset

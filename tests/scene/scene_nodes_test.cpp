@@ -165,3 +165,18 @@ TEST(SceneNodes, Errors) {
 
 }  // namespace
 }  // namespace zeroset::test
+
+namespace zeroset::test {
+namespace {
+
+TEST(SceneNodes, AnIdenticallyZeroSurfaceIsAnError) {
+    EXPECT_EQ(error_of("object { surface x - x }"),
+              "scene.zs:1:18: the surface is 0 at every point tried in its bounds ((x - x)): it must be negative "
+              "inside and positive outside to have an inside at all");
+    EXPECT_NE(error_of("object {\n  bounds box((0, 0, 0), (1, 1, 1))\n  surface x*0 }").find("scene.zs:3:11"),
+              std::string::npos);
+    EXPECT_EQ(error_of("object { surface x * y * z }"), "");  // 0 on planes only
+}
+
+}  // namespace
+}  // namespace zeroset::test

@@ -209,7 +209,10 @@ TEST(SceneParser, LightChecks) {
               "scene.zs:1:1: a light needs from (a point light) or direction (a directional light)");
     EXPECT_EQ(error_of("light { from (1, 1, 1)  direction (0, -1, 0) }"),
               "scene.zs:1:1: a light has either from (a point light) or direction (a directional light), not both");
-    EXPECT_EQ(error_of("light { direction (0, 0, 0) }"), "scene.zs:1:19: the light direction must not be zero");
+    EXPECT_EQ(error_of("light { direction (0, 0, 0) }"),
+              "scene.zs:1:19: the light direction must be a nonzero vector that can be normalised, but it is (0, 0, 0)");
+    // Tiny (even subnormal) directions normalise without underflow.
+    EXPECT_EQ(parse("light { direction (1e-320, 0, 0) }").lights.at(0).direction, (Vec3d{1, 0, 0}));
     EXPECT_EQ(error_of("light { from (1, 1, 1)  shadows yes }"),
               "scene.zs:1:33: shadows must be on or off, but found 'yes'");
     EXPECT_EQ(error_of("light { from (1, 1, 1)  color (1, -1, 0) }"),

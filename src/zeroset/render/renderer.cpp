@@ -39,6 +39,7 @@ struct ThreadTotals {
     RenderStats stats;
     ShadingCounters shading;
     std::optional<TraceScratch::NanRecord> first_nan;
+    std::optional<std::pair<int, int>> non_finite_pixel;  // the first pixel whose colour overflowed
 };
 
 void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera, int spp, SceneTracer& tracer,
@@ -59,7 +60,11 @@ void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera,
                 }
             }
             const Vec3d c = sum / static_cast<double>(spp);
-            image.at(px, py) = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
+            const Vec3f pixel{static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
+            if (!(std::isfinite(pixel.x) && std::isfinite(pixel.y) && std::isfinite(pixel.z)) &&
+                !totals.non_finite_pixel)
+                totals.non_finite_pixel = {px, py};
+            image.at(px, py) = pixel;
         }
     }
 }
@@ -131,6 +136,13 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
         stats.shadow_rays += t.shading.shadow_rays;
         stats.counters += t.stats.counters;
         if (t.first_nan) throw RenderError(nan_message(*t.first_nan));
+    }
+    for (const ThreadTotals& t : totals) {
+        if (!t.non_finite_pixel) continue;
+        const auto [px, py] = *t.non_finite_pixel;
+        throw RenderError("pixel (" + std::to_string(px) + ", " + std::to_string(py) +
+                          ") has no finite colour: light and material colours multiply past the largest float "
+                          "(3.4e38); scale them down");
     }
     stats.width = settings.width;
     stats.height = settings.height;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "zeroset/expr/evaluator.hpp"
 #include "zeroset/scene/constant_value.hpp"
 #include "zeroset/scene/expression_parser.hpp"
 #include "zeroset/scene/scene_error.hpp"
@@ -25,6 +26,27 @@ constexpr std::array<std::string_view, 6> node_keywords{"object",     "group",  
 constexpr int max_nesting = 200;
 /// Loop iterations a scene may read, in all.
 constexpr long long max_iterations = 10'000'000;
+
+/// True when f is exactly 0 at 64 points spread over the bounds (a fixed
+/// pseudo-random set): x − x or x·0, which no arithmetic folds away, and
+/// which would make every point a surface point.
+bool vanishes_throughout(const Expr& f, const Bounds& bounds) {
+    Box3 box = bounds.enclosing_box();
+    if (bounds.kind == Bounds::Kind::None) box = {{-1, -1, -1}, {1, 1, 1}};
+    const Tape tape(f);
+    Evaluator<double> eval(tape);
+    std::uint64_t state = 0x9e3779b97f4a7c15ULL;
+    const auto unit = [&state] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(state >> 11) * 0x1p-53;
+    };
+    for (int i = 0; i < 64; ++i) {
+        const Vec3d p{box.lo.x + unit() * (box.hi.x - box.lo.x), box.lo.y + unit() * (box.hi.y - box.lo.y),
+                      box.lo.z + unit() * (box.hi.z - box.lo.z)};
+        if (eval(p.x, p.y, p.z) != 0.0) return false;
+    }
+    return true;
+}
 
 bool is_one_of(std::span<const std::string_view> names, const Token& token) {
     return token.kind == TokenKind::Name && std::ranges::find(names, token.text) != names.end();
@@ -71,6 +93,7 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
     if (in_->at(TokenKind::String)) node->name = in_->next().text;
     Object& object = node->object;
     bool has_surface = false;
+    SourceLocation surface_at{};
     std::vector<std::string_view> keys(object_keys.begin(), object_keys.end());
     keys.insert(keys.end(), transform_keys.begin(), transform_keys.end());
     block(
@@ -87,6 +110,7 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
                                          format_number(surface.number().value()));
                 object.surface = surface.number();
                 has_surface = true;
+                surface_at = where;
             } else if (key.text == "bounds") {
                 object.bounds = bounds();
             } else if (key.text == "method") {
@@ -101,6 +125,10 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
         },
         transform_keys);
     if (!has_surface) in_->fail(keyword.where, "an object needs a surface");
+    if (vanishes_throughout(object.surface, object.bounds))
+        in_->fail(surface_at, "the surface is 0 at every point tried in its bounds (" +
+                                  object.surface.to_string() +
+                                  "): it must be negative inside and positive outside to have an inside at all");
     return node;
 }
 

@@ -153,9 +153,12 @@ void SceneParser::light(const Token& keyword) {
         } else if (key.text == "direction") {
             directional = true;
             const auto [direction, where] = vector("the light direction");
-            if (direction == Vec3d{}) in_->fail(where, "the light direction must not be zero");
+            const Vec3d unit = direction / std::hypot(direction.x, direction.y, direction.z);
+            if (!(std::isfinite(unit.x) && std::isfinite(unit.y) && std::isfinite(unit.z)))
+                in_->fail(where, "the light direction must be a nonzero vector that can be normalised, but it is " +
+                                     format_vector(direction));
             light.kind = Light::Kind::Directional;
-            light.direction = normalize(direction);
+            light.direction = unit;
         } else if (key.text == "color") {
             light.color = color("the light color");
         } else {
