@@ -2,12 +2,12 @@
 #include "ray_list.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <fstream>
+#include <sstream>
 #include <string>
+
+#include "zeroset/scene/file_text.hpp"
 
 namespace zeroset::cli {
 
@@ -46,8 +46,12 @@ bool parse_number(const std::string& word, double& value, std::string& problem) 
 }  // namespace
 
 std::vector<Ray> read_ray_list(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in) throw RayListError(file.string() + ": cannot open the ray list: " + std::strerror(errno));
+    std::istringstream in;
+    try {
+        in.str(read_text_file(file));
+    } catch (const FileReadError& e) {
+        throw RayListError(file.string() + ": cannot open the ray list: " + e.what());
+    }
     std::vector<Ray> rays;
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {

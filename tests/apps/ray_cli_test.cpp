@@ -183,6 +183,8 @@ TEST_F(RayCli, MalformedRaysLineNamesFileAndLine) {
     dir_.write("rays.txt", "# nothing\n\n");
     EXPECT_NE(run("ray --rays rays.txt").status, 0);
     EXPECT_NE(run("ray --rays missing.txt").err.find("missing.txt"), std::string::npos);
+    EXPECT_NE(run("ray --rays /dev/zero").err.find("/dev/zero: cannot open the ray list: it is a device"),
+              std::string::npos);
 }
 
 TEST_F(RayCli, UnknownObjectListsTheNames) {

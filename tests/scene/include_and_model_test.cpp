@@ -3,8 +3,12 @@
 // inside the .vm file. Files are written to a fresh temporary directory.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <fstream>
 
 #include "scene_test_support.hpp"
+#include "zeroset/scene/file_text.hpp"
 
 namespace zeroset {
 namespace {
@@ -139,6 +143,42 @@ TEST(Model, MissingModelIsReportedAtTheCall) {
                                     "': no such file or directory");
     EXPECT_EQ(test::error_of("object { surface model(bear) }"),
               "scene.zs:1:24: expected a file name in quotes, as in model(\"bear.vm\"), but found 'bear'");
+}
+
+}  // namespace
+}  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Include, OnlyRegularFilesOfBoundedSizeAreRead) {
+    const TempDir dir;
+    const auto fifo = dir.path() / "pipe.zs";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto main = dir.write("main.zs", "include \"pipe.zs\"\n");
+    EXPECT_EQ(load_error(main), main.string() + ":1:1: cannot open included file '" + fifo.string() +
+                                    "': it is a FIFO (a named pipe), not a regular file");
+    const auto zero = dir.write("zero.zs", "object { surface model(\"/dev/zero\") }\n");
+    EXPECT_EQ(load_error(zero), zero.string() + ":1:18: cannot open model '/dev/zero': it is a device, not a regular file");
+    const auto huge = dir.path() / "huge.zs";
+    { std::ofstream touch(huge); }
+    std::filesystem::resize_file(huge, max_text_file_bytes + 1);  // sparse: costs no disk
+    EXPECT_EQ(load_error(huge), huge.string() + ": cannot open the scene file: it is larger than 256 MiB, the most a "
+                                                "scene, include, model or ray list may be");
+}
+
+TEST(Include, NestingIsBounded) {
+    const TempDir dir;
+    for (int i = 0; i < 70; ++i)
+        dir.write("f" + std::to_string(i) + ".zs", "include \"f" + std::to_string(i + 1) + ".zs\"\n");
+    dir.write("f70.zs", "object { surface x }\n");
+    const std::string error = load_error(dir.path() / "f0.zs");
+    EXPECT_NE(error.find("f63.zs:1:1: includes nested too deeply (more than 64 files"), std::string::npos) << error;
+    // A long chain read one after another is no nesting at all.
+    std::string flat;
+    for (int i = 0; i < 200; ++i) flat += "include \"g" + std::to_string(i) + ".zs\"\n";
+    for (int i = 0; i < 200; ++i) dir.write("g" + std::to_string(i) + ".zs", "let g" + std::to_string(i) + " = 1\n");
+    EXPECT_EQ(load_error(dir.write("flat.zs", flat)), "");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <cstdint>
 #include <string>
 
 namespace zeroset {
@@ -14,7 +15,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-/// The whole content of the file; throws FileReadError.
+/// The most a text file the program reads may hold: scenes, includes, .vm
+/// models and ray lists (the largest model shipped, prospero.vm, is 150 kB).
+inline constexpr std::uintmax_t max_text_file_bytes = std::uintmax_t{256} << 20;
+
+/// The whole content of a regular file of at most max_text_file_bytes;
+/// throws FileReadError (a missing file, a directory, a FIFO or device, too
+/// large, unreadable).
 std::string read_text_file(const std::filesystem::path& path);
 
 /// The path with symbolic links and dot segments resolved (as far as it

@@ -24,6 +24,8 @@ constexpr std::array<std::string_view, 4> light_keys{"from", "direction", "color
 constexpr std::array<std::string_view, 5> material_keys{"color", "ambient", "diffuse", "specular", "shininess"};
 
 constexpr int max_image_size = 65536;
+/// Files including files, at most this deep (the reading recurses).
+constexpr std::size_t max_include_depth = 64;
 constexpr int max_samples_per_pixel = 1024;
 
 bool contains(std::span<const std::string_view> names, std::string_view name) {
@@ -199,6 +201,9 @@ void SceneParser::include(const Token& keyword) {
         in_->fail(keyword.where, "include cycle: " + chain + path.string());
     }
     if (included_.contains(canonical)) return;  // each file is read once per scene
+    if (open_files_.size() >= max_include_depth)
+        in_->fail(keyword.where, "includes nested too deeply (more than " + std::to_string(max_include_depth) +
+                                     " files, each including the next)");
     std::string text;
     try {
         text = read_text_file(path);
