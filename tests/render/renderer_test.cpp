@@ -291,3 +291,36 @@ TEST(Renderer, AColourPastTheLargestFloatIsAnError) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Renderer, AnImageTooLargeForMemoryIsRefusedBeforeAnyAllocation) {
+    RenderSettings settings;
+    settings.width = 65536;
+    settings.height = 65536;
+    try {
+        validate(settings);
+        FAIL() << "expected a RenderError";
+    } catch (const RenderError& e) {
+        EXPECT_EQ(std::string(e.what()), "65536x65536 is 4294967296 pixels, which would take 60 GiB; at most "
+                                         "268435456 pixels (e.g. 16384x16384) are rendered");
+    }
+    settings.width = settings.height = 16384;
+    EXPECT_NO_THROW(validate(settings));
+}
+
+TEST(Renderer, ALightAtTheHitPointLightsNothingThere) {
+    // The camera sits on the plane x = 0, inside its half-space, where the
+    // default light is too: no direction to the light, no NaN.
+    Scene scene;
+    Object o;
+    o.surface = var_x();
+    o.bounds = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+    scene.camera.from = {0, 0, -0.5};
+    scene.nodes.push_back(make_object_node(o));
+    EXPECT_NO_THROW(render(scene, small()));
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -104,3 +104,34 @@ TEST(Lexer, DescribesTokensForMessages) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Lexer, AByteOrderMarkIsSkipped) {
+    const auto tokens = tokenize("\xEF\xBB\xBFobject", "f.zs");
+    ASSERT_EQ(tokens.size(), 2u);
+    EXPECT_EQ(tokens[0].text, "object");
+    EXPECT_EQ(tokens[0].where.column, 1);
+}
+
+TEST(Lexer, ALoneCarriageReturnEndsALine) {
+    const auto tokens = tokenize("# a comment\rlet\r\nx\ry", "f.zs");
+    ASSERT_EQ(tokens.size(), 4u);
+    EXPECT_EQ(tokens[0].text, "let");
+    EXPECT_EQ(tokens[0].where.line, 2);
+    EXPECT_EQ(tokens[1].where.line, 3);
+    EXPECT_EQ(tokens[2].where.line, 4);
+}
+
+TEST(Lexer, AStringMayNotHoldANulByte) {
+    try {
+        tokenize(std::string_view("include \"a\0b\"", 14), "f.zs");
+        FAIL() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), "f.zs:1:11: a string may not hold a NUL byte");
+    }
+}
+
+}  // namespace
+}  // namespace zeroset

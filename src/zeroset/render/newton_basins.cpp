@@ -26,6 +26,7 @@ double scale(Complex t) { return std::max(1.0, modulus(t)); }
 void check_settings(const Ray& ray, const BasinSettings& s) {
     require_in_range(s.width, 1, max_image_side, "width");
     require_in_range(s.height, 1, max_image_side, "height");
+    require_image_fits(s.width, s.height);
     require_in_range(s.max_iterations, 1, max_iteration_limit, "iterations");
     require_in_range(s.threads, 0, 4096, "threads");
     const ComplexRect& r = s.region;

@@ -34,6 +34,13 @@ public:
 
 /// The largest image side, in pixels, any renderer here accepts.
 inline constexpr int max_image_side = 65536;
+/// The most pixels an image may have: 2^28, whose linear float image takes
+/// 3 GiB (plus the 8-bit copy a PNG is encoded from).
+inline constexpr long long max_image_pixels = 1LL << 28;
+
+/// Throws RenderError unless width × height ≤ max_image_pixels, saying how
+/// much memory the image would take.
+void require_image_fits(int width, int height);
 
 /// Checks sizes and counts; throws RenderError with a message naming the option.
 void validate(const RenderSettings& settings);

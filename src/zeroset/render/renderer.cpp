@@ -85,9 +85,21 @@ void require_in_range(int value, int low, int high, const char* what) {
     throw RenderError(message.str());
 }
 
+void require_image_fits(int width, int height) {
+    const long long pixels = static_cast<long long>(width) * height;
+    if (pixels <= max_image_pixels) return;
+    std::ostringstream message;
+    message.precision(3);
+    message << width << "x" << height << " is " << pixels << " pixels, which would take "
+            << static_cast<double>(pixels) * 15.0 / (1 << 30) << " GiB; at most " << max_image_pixels
+            << " pixels (e.g. 16384x16384) are rendered";
+    throw RenderError(message.str());
+}
+
 void validate(const RenderSettings& s) {
     require_in_range(s.width, 1, max_image_side, "width");
     require_in_range(s.height, 1, max_image_side, "height");
+    require_image_fits(s.width, s.height);
     require_in_range(s.samples_per_pixel, 1, max_samples_per_pixel, "samples per pixel");
     require_in_range(s.threads, 0, 4096, "threads");
 }

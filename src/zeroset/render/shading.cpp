@@ -28,6 +28,7 @@ Vec3d shade(SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit, ShadingC
         if (light.kind == Light::Kind::Point) {
             to_light = light.position - hit.point;
             distance = length(to_light);
+            if (!(distance > 0.0)) continue;  // the light is at the point itself: no direction to it
             to_light = to_light / distance;
         } else {
             to_light = -normalize(light.direction);

@@ -18,7 +18,9 @@ bool is_utf8_continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0
 
 class Lexer {
 public:
-    Lexer(std::string_view text, const std::string& file_name) : text_(text), file_name_(file_name) {}
+    Lexer(std::string_view text, const std::string& file_name) : text_(text), file_name_(file_name) {
+        if (text_.starts_with("\xEF\xBB\xBF")) pos_ = 3;  // a UTF-8 byte-order mark says nothing here
+    }
 
     std::vector<Token> run() {
         std::vector<Token> tokens;
@@ -33,9 +35,12 @@ private:
         return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
     }
 
+    /// A line ends at "\n", "\r\n" or a lone "\r".
+    [[nodiscard]] bool at_line_end() const { return peek() == '\n' || peek() == '\r'; }
+
     void advance() {
         const char c = text_[pos_++];
-        if (c == '\n') {
+        if (c == '\n' || (c == '\r' && peek() != '\n')) {
             ++here_.line;
             here_.column = 1;
         } else if (!is_utf8_continuation(c)) {
@@ -53,7 +58,7 @@ private:
             if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
                 advance();
             } else if (c == '#') {
-                while (!at_end() && peek() != '\n') advance();
+                while (!at_end() && !at_line_end()) advance();
             } else {
                 return;
             }
@@ -110,7 +115,10 @@ private:
         const SourceLocation where = here_;
         advance();  // the opening quote
         const std::size_t start = pos_;
-        while (!at_end() && peek() != '"' && peek() != '\n') advance();
+        while (!at_end() && peek() != '"' && !at_line_end()) {
+            if (peek() == '\0') fail(here_, "a string may not hold a NUL byte");
+            advance();
+        }
         if (peek() != '"') fail(where, "unterminated string (a string ends with '\"' on the same line)");
         const std::string_view text = text_.substr(start, pos_ - start);
         advance();  // the closing quote
