@@ -53,7 +53,7 @@ HitStatus LgMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, 
             continue;
         }
         // Still undecided at the finest width: a tangent root, or a jump.
-        if (const auto hit = finest_segment_hit(h, s.a, s.b, e.d1, counters))
+        if (const auto hit = finest_segment_hit(h, s.a, s.b, e, counters))
             if (!visit(*hit)) return HitStatus::Ok;
     }
     return HitStatus::NoHit;

@@ -17,10 +17,11 @@ std::optional<double> refine_sign_change(RayFunction& h, double a, double b, Tra
     return r.t;
 }
 
-std::optional<double> finest_segment_hit(RayFunction& h, double a, double b, const Interval& slope,
+std::optional<double> finest_segment_hit(RayFunction& h, double a, double b, const Jet<Interval>& e,
                                          TraceCounters& counters) {
-    const bool bounded = !slope.is_empty() && std::isfinite(slope.lo) && std::isfinite(slope.hi);
-    if (bounded) return a;
+    const auto bounded = [](const Interval& x) { return !x.is_empty() && std::isfinite(x.lo) && std::isfinite(x.hi); };
+    if (bounded(e.d1)) return a;
+    if (!bounded(e.v)) return std::nullopt;  // a pole
     if (!(h.value(a, counters) > 0.0) || !(h.value(b, counters) > 0.0)) return a;
     return std::nullopt;
 }

@@ -23,8 +23,10 @@ std::optional<double> refine_sign_change(RayFunction& h, double a, double b, Tra
 /// with the segment, and only a sign at the ends shows a root, as in sphere
 /// tracing's ε-segments: a if H(a) ≤ 0 or H(b) ≤ 0 (or either is NaN), else
 /// none — the root, if any, lies within the segment, reported at its left end
-/// like a tangent root.
-std::optional<double> finest_segment_hit(RayFunction& h, double a, double b, const Interval& slope,
+/// like a tangent root. And where the enclosure of H itself is unbounded
+/// over the segment, H has a pole there (−1/x at x = 0), across which it
+/// changes sign without a root: none.
+std::optional<double> finest_segment_hit(RayFunction& h, double a, double b, const Jet<Interval>& e,
                                          TraceCounters& counters);
 
 }  // namespace zeroset

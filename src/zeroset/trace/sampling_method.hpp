@@ -21,8 +21,14 @@ protected:
     HitStatus isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) override;
 
 private:
-    /// The root in a sign-change bracket, refined by this method's rule.
-    std::optional<double> refine(RayFunction& h, double a, double b, TraceCounters& counters) const;
+    /// What refining a sign-change bracket found.
+    struct Refined {
+        enum { Root, Pole, Failed } kind;
+        double t;
+    };
+    /// The root in a sign-change bracket, refined by this method's rule — or
+    /// a pole there, or a failure to converge.
+    Refined refine(RayFunction& h, double a, double b, TraceCounters& counters) const;
 
     Refinement refinement_;
 };

@@ -41,7 +41,10 @@ std::optional<double> SphereTracer::march(RayFunction& h, Span span, double side
                 continue;
             }
             // An ε-segment whose slope has no finite bound (e.g. sqrt at 0):
-            // only a sign change at its ends shows a root.
+            // only a sign change at its ends shows a root — unless f itself
+            // is unbounded here, a pole, across which it changes sign
+            // without a root (−1/x at x = 0).
+            if (!std::isfinite(value.lo) || !std::isfinite(value.hi)) continue;
             const double fa = value_at(a);
             if (std::isnan(fa)) return std::nullopt;
             if (fa <= 0.0) return a;
