@@ -23,7 +23,11 @@ bool IsolatingMethod::split_undecided(const RayFunction& h, const Segment& s, co
                                       const SegmentStack& segments) const {
     if (!segments.can_split(s)) return false;
     if (s.b - s.a > h.to_t(settings_.tangent_width)) return true;
-    const bool kink = e.d2.is_empty() || !std::isfinite(e.d2.magnitude());
+    // A kink: H″ unbounded while H′ stays bounded (the hull of the branches'
+    // slopes). Where H′ is unbounded too — a jump or a pole — splitting on
+    // would not settle it; finest_segment_hit does.
+    const auto unbounded = [](const Interval& x) { return x.is_empty() || !std::isfinite(x.magnitude()); };
+    const bool kink = unbounded(e.d2) && !unbounded(e.d1);
     return kink && SegmentStack::above_resolution(s);
 }
 

@@ -17,13 +17,35 @@ std::optional<double> refine_sign_change(RayFunction& h, double a, double b, Tra
     return r.t;
 }
 
+bool closes_in_on_a_pole(RayFunction& h, double a, double b, TraceCounters& counters) {
+    double lo = a, hi = b, f_lo = h.value(a, counters), f_hi = h.value(b, counters);
+    if (std::isnan(f_lo) || std::isnan(f_hi)) return false;
+    // Bisect a sign change between finite values down to adjacent doubles
+    // (64 halvings are more than any double interval needs) …
+    const bool negative_lo = f_lo < 0.0;
+    for (int i = 0; i < 64 && std::isfinite(f_lo) && std::isfinite(f_hi) && negative_lo != (f_hi < 0.0); ++i) {
+        const double mid = 0.5 * lo + 0.5 * hi;
+        if (!(lo < mid && mid < hi)) break;
+        const double f = h.value(mid, counters);
+        if (std::isnan(f)) return false;
+        ((f < 0.0) == negative_lo ? lo : hi) = mid;
+        ((f < 0.0) == negative_lo ? f_lo : f_hi) = f;
+    }
+    // … and compare |H| there with |H| a little way off on either side.
+    const double w = 16.0 * (b - a);
+    const double off = std::max(std::abs(h.value(a - w, counters)), std::abs(h.value(b + w, counters)));
+    return std::isfinite(off) && std::min(std::abs(f_lo), std::abs(f_hi)) > off;
+}
+
 std::optional<double> finest_segment_hit(RayFunction& h, double a, double b, const Jet<Interval>& e,
                                          TraceCounters& counters) {
     const auto bounded = [](const Interval& x) { return !x.is_empty() && std::isfinite(x.lo) && std::isfinite(x.hi); };
     if (bounded(e.d1)) return a;
-    if (!bounded(e.v)) return std::nullopt;  // a pole
-    if (!(h.value(a, counters) > 0.0) || !(h.value(b, counters) > 0.0)) return a;
-    return std::nullopt;
+    const double fa = h.value(a, counters), fb = h.value(b, counters);
+    if (fa > 0.0 && fb > 0.0) return std::nullopt;  // no sign at the ends shows a root
+    // Where the enclosure of H is unbounded too, a sign change may be a pole.
+    if (!bounded(e.v) && closes_in_on_a_pole(h, a, b, counters)) return std::nullopt;
+    return a;
 }
 
 }  // namespace zeroset

@@ -24,8 +24,14 @@ std::optional<double> refine_sign_change(RayFunction& h, double a, double b, Tra
 /// tracing's ε-segments: a if H(a) ≤ 0 or H(b) ≤ 0 (or either is NaN), else
 /// none — the root, if any, lies within the segment, reported at its left end
 /// like a tangent root. And where the enclosure of H itself is unbounded
-/// over the segment, H has a pole there (−1/x at x = 0), across which it
-/// changes sign without a root: none.
+/// over the segment, the sign change may be a pole (−1/x at x = 0), which is
+/// no root: see closes_in_on_a_pole.
+/// True when H changes sign over [a, b] by a pole: the sign change, bisected
+/// down to adjacent doubles (or an end where H is infinite), shows values
+/// larger than H takes 16 segment widths off either end (a root shows
+/// smaller ones, even one of 1/tan x where tan has its pole).
+bool closes_in_on_a_pole(RayFunction& h, double a, double b, TraceCounters& counters);
+
 std::optional<double> finest_segment_hit(RayFunction& h, double a, double b, const Jet<Interval>& e,
                                          TraceCounters& counters);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "zeroset/trace/refine_bracket.hpp"
 #include "zeroset/trace/segment_stack.hpp"
 
 namespace zeroset {
@@ -41,16 +42,18 @@ std::optional<double> SphereTracer::march(RayFunction& h, Span span, double side
                 continue;
             }
             // An ε-segment whose slope has no finite bound (e.g. sqrt at 0):
-            // only a sign change at its ends shows a root — unless f itself
-            // is unbounded here, a pole, across which it changes sign
-            // without a root (−1/x at x = 0).
-            if (!std::isfinite(value.lo) || !std::isfinite(value.hi)) continue;
+            // only a sign change at its ends shows a root — unless it is a
+            // pole, where f changes sign without one (−1/x at x = 0).
             const double fa = value_at(a);
             if (std::isnan(fa)) return std::nullopt;
             if (fa <= 0.0) return a;
             const double fb = value_at(b);
             if (std::isnan(fb)) return std::nullopt;
-            if (fb <= 0.0) return a;  // the crossing is in [a, b], within the 2ε the caller refines
+            if (fb <= 0.0) {
+                const bool unbounded = !std::isfinite(value.lo) || !std::isfinite(value.hi);
+                if (unbounded && closes_in_on_a_pole(h, a, b, counters)) continue;
+                return a;  // the crossing is in [a, b], within the 2ε the caller refines
+            }
             continue;
         }
         double t = a;
