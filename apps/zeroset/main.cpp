@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "interrupts.hpp"
 #include "options.hpp"
 
 namespace {
@@ -27,6 +28,7 @@ files; see docs/scene-language.md.
 }  // namespace
 
 int main(int argc, char** argv) {
+    zeroset::cli::handle_interrupts();
     const std::vector<std::string> args(argv + 1, argv + argc);
     try {
         if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {

@@ -146,3 +146,23 @@ TEST_F(Cli, EveryShippedSceneRendersWithSensibleCoverage) {
 }
 
 }  // namespace
+
+namespace {
+
+// Ctrl-C (SIGINT) or SIGTERM during a long render stops it at once, says so,
+// and leaves no file — neither the image nor a hidden temporary.
+TEST_F(Cli, AnInterruptedRenderStopsPromptlyAndWritesNothing) {
+    for (const char* signal : {"INT", "TERM"}) {
+        const std::string command = std::string("'" ZEROSET_BINARY "' render '") + ZEROSET_SOURCE_DIR +
+                                    "/scenes/examples/bear.zs' -o slow.png --width 800 --height 600 & pid=$!; "
+                                    "sleep 0.5; kill -" + signal + " $pid; wait $pid; echo status=$?";
+        const Outcome r = run_shell(command);
+        EXPECT_NE(r.out.find(std::string("status=") + (std::string(signal) == "INT" ? "130" : "143")),
+                  std::string::npos)
+            << r.out << r.err;
+        EXPECT_NE(r.err.find("nothing was written"), std::string::npos) << r.err;
+        EXPECT_EQ(file_count(), 0u) << signal;
+    }
+}
+
+}  // namespace

@@ -1,6 +1,7 @@
 // AtomicFile: where the temporary lives, what happens on commit, on
 // abandonment and on failure.
 #include "zeroset/io/atomic_file.hpp"
+#include "zeroset/io/pending_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -128,6 +129,33 @@ TEST(AtomicFile, WriteFailureIsReportedAndCleanedUp) {
     }
     EXPECT_EQ(dir.entries(), Names{"out.bin"});
     EXPECT_EQ(test::read_bytes(dir / "out.bin"), (Bytes{'o', 'l', 'd'}));
+}
+
+}  // namespace
+}  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+// What the program's signal handler does (apps/zeroset/interrupts.cpp): the
+// temporary file of a write in progress is removed, and nothing else.
+TEST(AtomicFile, ASignalHandlerCanRemoveTheTemporaryFileOfAWriteInProgress) {
+    const test::TempDir dir;
+    const auto keep = dir.write("keep.txt", "untouched");
+    AtomicFile file(dir.path() / "out.png");
+    file.write(std::vector<std::uint8_t>(100, 7));
+    ASSERT_TRUE(std::filesystem::exists(file.temp_path()));
+    remove_pending_files();
+    EXPECT_FALSE(std::filesystem::exists(file.temp_path()));
+    EXPECT_TRUE(std::filesystem::exists(keep));
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.png"));
+}
+
+TEST(AtomicFile, ACommittedFileIsNoLongerPending) {
+    const test::TempDir dir;
+    write_file_atomically(dir.path() / "done.txt", std::vector<std::uint8_t>{'o', 'k'});
+    remove_pending_files();
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "done.txt"));
 }
 
 }  // namespace

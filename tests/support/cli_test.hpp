@@ -32,9 +32,13 @@ struct Outcome {
 class CliTest : public ::testing::Test {
 protected:
     /// Runs `zeroset ARGS` in dir_.
-    Outcome run(const std::string& args) const {
+    Outcome run(const std::string& args) const { return run_shell("'" ZEROSET_BINARY "' " + args); }
+
+    /// Runs a shell command line in dir_ (for what a test must do around the
+    /// program, such as signalling it).
+    Outcome run_shell(const std::string& command_line) const {
         const std::filesystem::path out = logs_ / "stdout.txt", err = logs_ / "stderr.txt";
-        const std::string command = "cd '" + dir_.path().string() + "' && '" ZEROSET_BINARY "' " + args + " > '" +
+        const std::string command = "cd '" + dir_.path().string() + "' && { " + command_line + "; } > '" +
                                     out.string() + "' 2> '" + err.string() + "'";
         const int raw = std::system(command.c_str());
         return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};

@@ -3,6 +3,8 @@
 // disk may only show up there), then rename(), which replaces atomically.
 #include "zeroset/io/atomic_file.hpp"
 
+#include "zeroset/io/pending_files.hpp"
+
 #include <atomic>
 #include <cerrno>
 #include <system_error>
@@ -34,9 +36,17 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
     if (!target_.has_filename()) throw FileWriteError(target_, "not a file name");
     for (int attempt = 0; attempt < 100; ++attempt) {
         temp_ = temp_name_for(target_, temp_counter.fetch_add(1, std::memory_order_relaxed));
+        // Registered before it exists, so a signal can never leave it behind.
+        pending_slot_ = register_pending_file(temp_);
         fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd_ >= 0) return;
-        if (errno != EEXIST) break;  // EEXIST: a stale temporary holds the name; try the next
+        const int error_number = errno;
+        unregister_pending_file(pending_slot_);  // not ours: it may be another writer's
+        pending_slot_ = -1;
+        if (error_number != EEXIST) {  // EEXIST: a stale temporary holds the name; try the next
+            temp_.clear();
+            throw FileWriteError(target_, "cannot create file: " + errno_message(error_number));
+        }
     }
     const int error_number = errno;
     temp_.clear();
@@ -74,6 +84,8 @@ void AtomicFile::commit() {
         discard();
         throw FileWriteError(target_, "cannot replace file: " + error.message());
     }
+    unregister_pending_file(pending_slot_);
+    pending_slot_ = -1;
     committed_ = true;
 }
 
@@ -92,6 +104,8 @@ void AtomicFile::discard() noexcept {
         std::filesystem::remove(temp_, ignored);
         temp_.clear();
     }
+    unregister_pending_file(pending_slot_);
+    pending_slot_ = -1;
 }
 
 void write_file_atomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes) {

@@ -1,7 +1,8 @@
 // Atomic file replacement: output goes to a uniquely named temporary file in
 // the target's directory and is renamed onto the target only once it is
 // completely written and synced. A failed or interrupted write therefore
-// never leaves a half-written target, and the temporary file is removed.
+// never leaves a half-written target, and the temporary file is removed —
+// by a signal handler too (io/pending_files.hpp).
 #pragma once
 
 #include <cstddef>
@@ -45,6 +46,7 @@ private:
     std::filesystem::path target_;
     std::filesystem::path temp_;
     int fd_ = -1;
+    int pending_slot_ = -1;  // in io/pending_files.hpp, while the temporary file exists
     bool committed_ = false;
 };
 
