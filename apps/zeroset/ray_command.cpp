@@ -25,7 +25,8 @@ constexpr const char* ray_usage = R"usage(Usage: zeroset ray [SCENE] [options]
 
 Casts one ray r(t) = origin + t*dir through one object of SCENE and asks every
 intersection method for the first hit and for all hits in the span [t0, t1]
-where the ray is inside the object's bounds (from t = 0). For each method it
+where the ray is inside the object's bounds (from t = 0), shrunk by interval
+analysis to where the surface can be. For each method it
 prints the hits, the function evaluations each query spent and how it ended:
 ok, no hit, failed (the method gave up, or is not available: the message is
 shown) or diverged (Newton's iterates ran away).
@@ -113,7 +114,8 @@ int ray_command(const std::vector<std::string>& args) {
     const RaySubject subject{default_scene_used ? "<default>" : options.positional()[0], placed.name(), newton_from};
 
     const Tape tape(object.surface, SlotLayout::OnePerValue);
-    RootFinderSettings settings = settings_for_scale(object.bounds.enclosing_box().diagonal());
+    const SearchRegion region(tape, object.bounds);
+    RootFinderSettings settings = settings_for_scale(region.scale());
     settings.newton_start = subject.newton_from;
 
     // --compare: another scene's object, drawn along the same ray.
@@ -136,7 +138,7 @@ int ray_command(const std::vector<std::string>& args) {
 
     std::string output;
     for (const Ray& ray : rays) {
-        const RayProbe probe = probe_ray(tape, object.bounds, to_object_space(placed, ray), methods, settings);
+        const RayProbe probe = probe_ray(tape, region, to_object_space(placed, ray), methods, settings);
         if (plot_file) {
             if (!probe.span) throw std::runtime_error("cannot plot: the ray misses the object's bounds");
             write_svg_plot(ray_plot(subject, probe, tape, compared), *plot_file);

@@ -42,9 +42,9 @@ void run_method(MethodOutcome& o, const Tape& tape, const Ray& ray, Span span, c
 
 }  // namespace
 
-RayProbe probe_ray(const Tape& tape, const Bounds& bounds, const Ray& ray, std::span<const Method> methods,
+RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray, std::span<const Method> methods,
                    const RootFinderSettings& settings) {
-    RayProbe probe{ray, bounds.clip(ray, 0.0, std::numeric_limits<double>::infinity()), {}};
+    RayProbe probe{ray, region.clip(ray, 0.0, std::numeric_limits<double>::infinity()), {}};
     for (const Method m : methods) {
         MethodOutcome& o = probe.methods.emplace_back();
         o.method = m;

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "zeroset/expr/tape.hpp"
-#include "zeroset/trace/bounds.hpp"
 #include "zeroset/trace/root_finder.hpp"
+#include "zeroset/trace/search_region.hpp"
 
 namespace zeroset::cli {
 
@@ -35,7 +35,7 @@ struct MethodOutcome {
 
 struct RayProbe {
     Ray ray;
-    std::optional<Span> span;  // the ray inside the bounds, from t = 0; none when it misses them
+    std::optional<Span> span;  // the ray in the search region, from t = 0; none when it misses it
     std::vector<MethodOutcome> methods;
 };
 
@@ -43,7 +43,7 @@ struct RayProbe {
 /// query, so neither query's evaluations or log include the other's. A
 /// method that throws (e.g. one not implemented yet) is reported as failed
 /// with the exception's message. `tape` must use SlotLayout::OnePerValue.
-RayProbe probe_ray(const Tape& tape, const Bounds& bounds, const Ray& ray, std::span<const Method> methods,
+RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray, std::span<const Method> methods,
                    const RootFinderSettings& settings);
 
 /// "auto (sphere)" for auto, else the method's name.

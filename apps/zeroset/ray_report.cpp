@@ -49,9 +49,9 @@ std::string ray_report_text(const RaySubject& subject, const RayProbe& probe) {
     out += "dir      " + vector_text(probe.ray.dir) + "   (used as given: |dir| = " + number(length(probe.ray.dir)) + ")\n";
     if (probe.span)
         out += "span     t0 = " + number(probe.span->t0) + ", t1 = " + number(probe.span->t1) +
-               "   (the ray inside the object's bounds, from t = 0)\n";
+               "   (the ray inside the object's bounds, shrunk to its surface; from t = 0)\n";
     else
-        out += "span     none: the ray misses the object's bounds\n";
+        out += "span     none: the ray misses the object's bounds (shrunk to its surface)\n";
     if (subject.newton_from) out += "newton   starts at t = " + number(*subject.newton_from) + "\n";
 
     constexpr std::size_t method_w = 17, t_w = 17, status_w = 10, evals_w = 7;

@@ -245,6 +245,13 @@ TEST(SceneParser, BoundsChecks) {
               "scene.zs:1:46: sphere radius must be positive, but it is 0");
     EXPECT_EQ(error_of("object { surface x  bounds sphere((0, 0, 0), -2) }"),
               "scene.zs:1:46: sphere radius must be positive, but it is -2");
+    // Past what a double can hold, bounds are refused (issue 9, defect 1).
+    const std::string too_large =
+        "the bounds are too large for double precision: the diagonal of their box overflows (keep them within about "
+        "±5e307)";
+    EXPECT_EQ(error_of("object { surface x  bounds box((-1e308, 0, 0), (1e308, 1, 1)) }"), "scene.zs:1:32: " + too_large);
+    EXPECT_EQ(error_of("object { surface x  bounds sphere((0, 0, 0), 1e308) }"), "scene.zs:1:35: " + too_large);
+    EXPECT_NO_THROW(parse("object { surface x^2+y^2+z^2-1  bounds box((-5e307, -5e307, -5e307), (5e307, 5e307, 5e307)) }"));
     EXPECT_EQ(error_of("object { surface x  bounds cube(1) }"),
               "scene.zs:1:28: expected box(lo, hi), sphere(center, radius) or none but found 'cube'");
     EXPECT_EQ(error_of("object { surface x  bounds box((0, 0, 0)) }"), "scene.zs:1:41: expected ',' but found ')'");

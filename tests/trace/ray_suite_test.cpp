@@ -51,7 +51,7 @@ TEST(RaySuite, IsLargeAndCoversEveryCase) {
     std::map<RefKind, int> kinds;
     for (const SuiteRay& r : rays) {
         const SuiteSurface& s = ray_suite_surface(r.surface);
-        ASSERT_EQ(r.scale, s.scale()) << describe(r);
+        ASSERT_DOUBLE_EQ(r.scale, s.scale()) << describe(r);  // written as %.17g; the diagonal is hypot
         ASSERT_LT(r.span.t0, r.span.t1) << describe(r);
         ASSERT_NEAR(length(r.ray.dir), 1.0, 1e-15) << describe(r);
         if (r.t_ref) {

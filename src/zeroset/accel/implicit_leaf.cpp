@@ -48,12 +48,10 @@ ImplicitLeaf::ImplicitLeaf(std::size_t id, LeafDescription description)
     : id_(id),
       description_(std::move(description)),
       tape_(description_.surface, SlotLayout::OnePerValue),
-      box_(description_.bounds.enclosing_box()),
+      region_(tape_, description_.bounds),
       method_(resolve_method(description_.method, tape_)),
-      settings_(settings_for_scale(box_.diagonal())) {
+      settings_(settings_for_scale(region_.scale())) {
     settings_.polynomial_solver = description_.solver;
-    if (description_.bounds.kind == Bounds::Kind::None)
-        throw std::invalid_argument("an implicit surface needs bounds (only a plane may go without: see HalfSpace)");
     (void)make_root_finder(method_, tape_, settings_);  // throws here, not in a render thread
 }
 
@@ -74,12 +72,12 @@ SurfaceRef ImplicitLeaf::surface_at(const Ray& ray, double t, BoundaryKind kind)
     s.kind = kind;
     s.material = description_.material;
     s.local_point = ray.at(t);
-    s.scale = box_.diagonal();
+    s.scale = region_.scale();
     return s;
 }
 
 std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
-    const auto span = description_.bounds.clip(ray, t_min, t_max);
+    const auto span = region_.clip(ray, t_min, t_max);
     if (!span) return std::nullopt;
     LeafScratch& leaf = scratch_for(scratch);
     const std::uint64_t nans = scratch.counters.nan_evaluations;
@@ -97,7 +95,7 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
 }
 
 void ImplicitLeaf::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {
-    const auto span = description_.bounds.clip(ray, t_min, t_max);
+    const auto span = region_.clip(ray, t_min, t_max);
     if (!span) return;
     LeafScratch& leaf = scratch_for(scratch);
     const std::uint64_t nans = scratch.counters.nan_evaluations;
@@ -140,7 +138,7 @@ double ImplicitLeaf::normal_step() const {
     const double relative = description_.normal_step > 0.0                               ? description_.normal_step
                             : description_.normals == NormalMode::CentralDifference ? 1e-6
                                                                                     : 3e-9;
-    return relative * box_.diagonal();
+    return relative * region_.scale();
 }
 
 Vec3d ImplicitLeaf::local_normal(const SurfaceRef& surface, TraceScratch& scratch) const {
@@ -157,7 +155,7 @@ Vec3d ImplicitLeaf::local_normal(const SurfaceRef& surface, TraceScratch& scratc
             const Vec3d n = unit_or_zero(evaluate_gradient(leaf.gradient, p).g);
             // Where ∇f vanishes (or overflows) exactly — at a kink of a
             // distance function — central differences over their default step.
-            return n != Vec3d{} ? n : central(1e-6 * box_.diagonal());
+            return n != Vec3d{} ? n : central(1e-6 * region_.scale());
         }
         case NormalMode::ForwardDifference: {  // eq. 34
             const double h = normal_step(), f0 = f(p.x, p.y, p.z);

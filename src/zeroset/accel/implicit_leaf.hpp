@@ -18,6 +18,7 @@
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/trace/bounds.hpp"
 #include "zeroset/trace/root_finder.hpp"
+#include "zeroset/trace/search_region.hpp"
 
 namespace zeroset {
 
@@ -32,7 +33,8 @@ struct LeafDescription {
     Method method = Method::Auto;  // Auto is resolved by choose_method
     PolynomialSolver solver = PolynomialSolver::Fast;
     NormalMode normals = NormalMode::Analytic;
-    /// The difference normals' step relative to the bounds' diagonal; 0:
+    /// The difference normals' step relative to the object's size (the
+    /// diagonal of its SearchRegion's box); 0:
     /// the default of the mode (normal_step()).
     double normal_step = 0.0;
     MaterialId material = no_material;
@@ -56,7 +58,7 @@ public:
     /// surface (the polynomial method on a non-polynomial f).
     ImplicitLeaf(std::size_t id, LeafDescription description);
 
-    [[nodiscard]] Box3 bounds() const override { return box_; }
+    [[nodiscard]] Box3 bounds() const override { return region_.box(); }
     std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
 
@@ -87,7 +89,7 @@ private:
     std::size_t id_;
     LeafDescription description_;
     Tape tape_;  // SlotLayout::OnePerValue, so it can be pruned
-    Box3 box_;   // the bounds' enclosing box
+    SearchRegion region_;  // the bounds, shrunk to the surface
     Method method_;
     RootFinderSettings settings_;
 };

@@ -33,7 +33,7 @@ struct SurfaceRef {
     MaterialId material = no_material;   // the innermost material given
     Vec3d local_point{};                 // the point in the leaf's space
     Mat4 to_local = Mat4::identity();    // from the query's space to the leaf's
-    double scale = 1.0;                  // the leaf's size (bounds diagonal) in the query's space
+    double scale = 1.0;                  // the leaf's size (SearchRegion::scale) in the query's space
 };
 
 struct Hit {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -22,7 +23,11 @@ struct Box3 {
 
     [[nodiscard]] constexpr Vec3d center() const { return (lo + hi) * 0.5; }
     [[nodiscard]] constexpr Vec3d size() const { return hi - lo; }
-    [[nodiscard]] double diagonal() const { return length(size()); }
+    /// The diagonal's length, without overflow for any finite box.
+    [[nodiscard]] double diagonal() const {
+        const Vec3d s = size();
+        return std::hypot(s.x, s.y, s.z);
+    }
     [[nodiscard]] constexpr bool contains(const Vec3d& p) const {
         return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
     }

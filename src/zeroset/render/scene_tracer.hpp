@@ -17,7 +17,7 @@ struct SurfaceHit {
     Vec3d point;
     Vec3d normal;  // unit, facing the ray's origin
     MaterialId material;
-    double scale;  // the size of the object hit (its bounds' diagonal), in scene units
+    double scale;  // the size of the object hit (its shrunk bounds' diagonal), in scene units
 };
 
 class SceneTracer {

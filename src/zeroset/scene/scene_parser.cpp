@@ -232,6 +232,9 @@ Material SceneParser::material(const Token& keyword) {
 }
 
 Bounds SceneParser::bounds() {
+    static constexpr std::string_view too_large_bounds =
+        "the bounds are too large for double precision: the diagonal of their box overflows (keep them within about "
+        "±5e307)";
     const Token& shape = in_->peek();
     const bool is_box = shape.kind == TokenKind::Name && shape.text == "box";
     const bool is_sphere = shape.kind == TokenKind::Name && shape.text == "sphere";
@@ -256,14 +259,18 @@ Bounds SceneParser::bounds() {
                                      format_number(hi[i]));
             }
         }
-        return Bounds::make_box({lo, hi});
+        const Bounds box = Bounds::make_box({lo, hi});
+        if (!std::isfinite(box.enclosing_box().diagonal())) in_->fail(where, std::string(too_large_bounds));
+        return box;
     }
-    const Vec3d center = vector("the sphere center").value;
+    const auto [center, at] = vector("the sphere center");
     in_->expect(TokenKind::Comma);
     const auto [radius, where] = number("the sphere radius");
     in_->expect(TokenKind::RightParen);
     if (!(radius > 0.0)) in_->fail(where, "sphere radius must be positive, but it is " + format_number(radius));
-    return Bounds::make_sphere(center, radius);
+    const Bounds sphere = Bounds::make_sphere(center, radius);
+    if (!std::isfinite(sphere.enclosing_box().diagonal())) in_->fail(at, std::string(too_large_bounds));
+    return sphere;
 }
 
 const Token& SceneParser::choice(std::string_view what, std::span<const std::string_view> names) {

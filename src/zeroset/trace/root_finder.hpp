@@ -60,7 +60,7 @@ struct RootFinderSettings {
     MethodLog* log = nullptr;
 };
 
-/// Tolerances for an object of size `scale` (its bounds' diagonal): sphere
+/// Tolerances for an object of size `scale` (SearchRegion::scale): sphere
 /// tracing's ε far below a pixel at any sensible framing, the finest
 /// isolation width far above double-precision noise.
 RootFinderSettings settings_for_scale(double scale);

@@ -1,0 +1,135 @@
+// Shrinking by slabs: for each face, a galloping search for the thickest slab
+// behind it that interval arithmetic (math/interval.hpp) proves outside, then
+// bisection to the precision asked. Passes repeat because every face that
+// moves narrows the slabs of the other axes, which tightens their proofs.
+#include "zeroset/trace/search_region.hpp"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "zeroset/expr/evaluator.hpp"
+
+namespace zeroset {
+
+namespace {
+
+/// (1 − w)·a + w·b, which cannot overflow for finite a and b.
+double mix(double a, double b, double w) { return (1.0 - w) * a + w * b; }
+
+Vec3d centre(const Box3& box) {
+    return {mix(box.lo.x, box.hi.x, 0.5), mix(box.lo.y, box.hi.y, 0.5), mix(box.lo.z, box.hi.z, 0.5)};
+}
+
+class OutsideProver {
+public:
+    OutsideProver(const Tape& tape, int max_cells) : eval_(tape), point_(tape), max_cells_(max_cells) {}
+
+    /// True when f > 0 is proven all over the box with at most max_cells
+    /// cells. A cell where f is undefined throughout (an empty enclosure) is
+    /// not outside: it stays, for the methods to report the NaN. A point of
+    /// the box with f ≤ 0 (or NaN) settles the question at once, so f is
+    /// tried first at `witness`, a point of the box the caller expects to be
+    /// inside, and at the centre of every cell before it is split.
+    bool outside(const Box3& box, const Vec3d& witness) {
+        if (!positive_at(witness)) return false;
+        std::array<Box3, 64> stack;
+        int size = 0, cells = 1;
+        stack[size++] = box;
+        while (size > 0) {
+            const Box3 cell = stack[--size];
+            const Interval f = evaluate_box(eval_, cell.lo, cell.hi);
+            if (!f.is_empty() && f.lo > 0.0) continue;
+            if (f.is_empty() || f.hi <= 0.0 || cells >= max_cells_ || size + 2 > static_cast<int>(stack.size()))
+                return false;
+            if (!positive_at(centre(cell))) return false;
+            int axis = 0;  // split the widest side (half-widths: no overflow)
+            for (int a = 1; a < 3; ++a)
+                if (0.5 * cell.hi[a] - 0.5 * cell.lo[a] > 0.5 * cell.hi[axis] - 0.5 * cell.lo[axis]) axis = a;
+            const double middle = mix(cell.lo[axis], cell.hi[axis], 0.5);
+            if (!(middle > cell.lo[axis] && middle < cell.hi[axis])) return false;  // as fine as doubles go
+            Box3 low = cell, high = cell;
+            low.hi[axis] = middle;
+            high.lo[axis] = middle;
+            stack[size++] = low;
+            stack[size++] = high;
+            ++cells;
+        }
+        return true;
+    }
+
+private:
+    bool positive_at(const Vec3d& p) { return point_(p.x, p.y, p.z) > 0.0; }
+
+    Evaluator<Interval> eval_;
+    Evaluator<double> point_;
+    int max_cells_;
+};
+
+/// Moves one face (side 0: lo, 1: hi) of `axis` inward past the thickest
+/// slab proven outside; true when it moved by more than `precision` of the
+/// width.
+bool move_face(OutsideProver& prover, Box3& box, int axis, int side, double precision) {
+    const double face = side == 0 ? box.lo[axis] : box.hi[axis];
+    const double opposite = side == 0 ? box.hi[axis] : box.lo[axis];
+    const auto cut = [&](double w) { return mix(face, opposite, w); };
+    const auto clear = [&](double w) {  // the slab from the face to cut(w)
+        Box3 slab = box;
+        (side == 0 ? slab.hi[axis] : slab.lo[axis]) = cut(w);
+        Vec3d deepest = centre(box);  // the middle of the slab's inner side: nearest the surface, likely
+        deepest[axis] = cut(w);
+        return prover.outside(slab, deepest);
+    };
+    // Gallop out from a thin slab, then bisect between the thickest slab
+    // proven clear and the thinnest not.
+    double cleared = 0.0, blocked = 1.0;
+    for (double w = precision; w < 1.0; w *= 2.0) {
+        if (!clear(w)) {
+            blocked = w;
+            break;
+        }
+        cleared = w;
+    }
+    while (blocked - cleared > precision) {
+        const double w = 0.5 * (cleared + blocked);
+        (clear(w) ? cleared : blocked) = w;
+    }
+    if (cleared < precision) return false;
+    const double moved = cut(cleared);
+    if (side == 0 ? !(moved < box.hi[axis]) : !(moved > box.lo[axis])) return false;
+    (side == 0 ? box.lo[axis] : box.hi[axis]) = moved;
+    return true;
+}
+
+}  // namespace
+
+Box3 shrink_to_surface(const Tape& tape, const Box3& box, const ShrinkLimits& limits) {
+    OutsideProver prover(tape, limits.cells_per_proof);
+    if (prover.outside(box, centre(box))) return box;  // no surface here: nothing to shrink to
+    Box3 shrunk = box;
+    for (int pass = 0; pass < limits.max_passes; ++pass) {
+        bool moved = false;
+        for (int axis = 0; axis < 3; ++axis)
+            for (int side = 0; side < 2; ++side) moved |= move_face(prover, shrunk, axis, side, limits.precision);
+        if (!moved) break;
+    }
+    return shrunk;
+}
+
+SearchRegion::SearchRegion(const Tape& tape, const Bounds& bounds) : bounds_(bounds) {
+    if (bounds.kind == Bounds::Kind::None)
+        throw std::invalid_argument("an implicit surface needs bounds (only a plane may go without: see HalfSpace)");
+    const Box3 box = bounds.enclosing_box();
+    if (!std::isfinite(box.diagonal()))
+        throw std::invalid_argument("the bounds are too large for double precision: their diagonal overflows");
+    box_ = shrink_to_surface(tape, box);
+    scale_ = box_.diagonal();
+}
+
+std::optional<Span> SearchRegion::clip(const Ray& ray, double t_min, double t_max) const {
+    const auto in_box = box_.clip(ray, t_min, t_max);
+    if (!in_box || bounds_.kind == Bounds::Kind::Box) return in_box;
+    return bounds_.clip(ray, in_box->t0, in_box->t1);
+}
+
+}  // namespace zeroset
