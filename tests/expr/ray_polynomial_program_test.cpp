@@ -97,6 +97,9 @@ TEST(RayPolynomialProgram, RefusesWhatIsNotAPolynomial) {
     const auto high = RayPolynomialProgram::compile(Tape(powi(X * Y, 17)));
     EXPECT_FALSE(high.program);
     EXPECT_EQ(high.refusal, Refusal::DegreeTooHigh);
+    // The limit itself (docs/limits.md): degree 32 compiles, 33 does not.
+    EXPECT_TRUE(RayPolynomialProgram::compile(Tape(powi(X * Y, 16) - 1.0)).program);
+    EXPECT_EQ(RayPolynomialProgram::compile(Tape(powi(X * Y, 16) * Z - 1.0)).refusal, Refusal::DegreeTooHigh);
 }
 
 TEST(RayPolynomialProgram, FoldsConstantsAndKeepsTheirBound) {

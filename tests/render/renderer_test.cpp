@@ -306,8 +306,10 @@ TEST(Renderer, AnImageTooLargeForMemoryIsRefusedBeforeAnyAllocation) {
         EXPECT_EQ(std::string(e.what()), "65536x65536 is 4294967296 pixels, which would take 60 GiB; at most "
                                          "268435456 pixels (e.g. 16384x16384) are rendered");
     }
-    settings.width = settings.height = 16384;
+    settings.width = settings.height = 16384;  // 2^28, the limit
     EXPECT_NO_THROW(validate(settings));
+    settings.height = 16385;
+    EXPECT_THROW(validate(settings), RenderError);
 }
 
 TEST(Renderer, ALightAtTheHitPointLightsNothingThere) {

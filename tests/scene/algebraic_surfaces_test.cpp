@@ -181,6 +181,10 @@ TEST(AlgebraicSurfaces, WrongCallsAreLocatedErrorsThatShowTheSignature) {
     EXPECT_EQ(error_of("object { surface kummer(3) }"),
               "scene.zs:1:18: kummer: mu2 must be between 1/3 and 3 (16 real nodes), but it is 3; "
               "call it as kummer(mu2 = 1.69, [point])");
+    EXPECT_EQ(error_of("object { surface monomial(1, 64) }"), "");  // the limit (docs/limits.md)
+    EXPECT_EQ(error_of("object { surface monomial(1, 65) }"),
+              "scene.zs:1:18: monomial: i must be an integer from 0 to 64, but it is 65; "
+              "call it as monomial(c = 1, i = 0, j = 0, k = 0, [point])");
     EXPECT_EQ(error_of("object { surface monomial(1, 2.5) }"),
               "scene.zs:1:18: monomial: i must be an integer from 0 to 64, but it is 2.5; "
               "call it as monomial(c = 1, i = 0, j = 0, k = 0, [point])");

@@ -18,9 +18,10 @@ namespace zeroset::test {
 inline Scene parse(const std::string& text) { return parse_scene(text, "scene.zs", "."); }
 
 /// The error parsing `text` produces, as "file:line:column: message"; "" if it parses.
-inline std::string error_of(const std::string& text, const std::filesystem::path& base_dir = ".") {
+inline std::string error_of(const std::string& text, const std::filesystem::path& base_dir = ".",
+                            const SceneLimits& limits = {}) {
     try {
-        parse_scene(text, "scene.zs", base_dir);
+        parse_scene(text, "scene.zs", base_dir, limits);
     } catch (const SceneError& e) {
         return e.what();
     }

@@ -188,7 +188,7 @@ TEST_P(RaySuiteScaled, SphereTracerNeverSkipsTheFirstHit) {
         h.set_ray(scaled_ray(r, s));
         TracerTally& tally = tallies[r.surface];
         TraceCounters counters;
-        std::optional<double> hit = tracer.first_hit(h, scaled_span(r, s), counters);
+        std::optional<double> hit = tracer.first_hit(h, scaled_span(r, s), counters).t;
         if (hit) *hit *= s;
         if (hit) ++tally.hits;
         if (!hit && r.t_ref) ++tally.misses;

@@ -2,6 +2,7 @@
 #include "zeroset/expr/expr.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <functional>
 #include <mutex>
@@ -50,6 +51,9 @@ InternTable& table() {
     return *t;
 }
 
+std::atomic<std::size_t> live_nodes{0};
+std::atomic<std::size_t> node_limit{4'000'000};
+
 }  // namespace
 
 Expr Expr::intern(Op op, double value, int n, const Expr* a, const Expr* b) {
@@ -59,12 +63,17 @@ Expr Expr::intern(Op op, double value, int n, const Expr* a, const Expr* b) {
     if (auto it = t.nodes.find(key); it != t.nodes.end()) {
         if (auto live = it->second.lock()) return Expr(std::move(live));
     }
+    if (live_nodes.load(std::memory_order_relaxed) >= node_limit.load(std::memory_order_relaxed))
+        throw ExpressionTooLarge("the expressions have more than " + std::to_string(node_limit.load()) +
+                                 " distinct operations in all");
     const bool is_var = op == Op::VarX || op == Op::VarY || op == Op::VarZ;
     const bool constant_valued =
         !is_var && (!a || a->is_constant_valued()) && (!b || b->is_constant_valued());
-    auto node = std::make_shared<const ExprNode>(
-        ExprNode{op, n, value, constant_valued, a ? a->node_ : nullptr, b ? b->node_ : nullptr});
+    // Built in place (no temporary, whose destructor would count as a node freed).
+    auto node = std::make_shared<const ExprNode>(op, n, value, constant_valued, a ? a->node_ : nullptr,
+                                                 b ? b->node_ : nullptr);
     t.nodes[key] = node;
+    live_nodes.fetch_add(1, std::memory_order_relaxed);
     if (t.nodes.size() >= t.sweep_at) {
         std::erase_if(t.nodes, [](const auto& entry) { return entry.second.expired(); });
         t.sweep_at = std::max<std::size_t>(1024, 2 * t.nodes.size());
@@ -72,7 +81,12 @@ Expr Expr::intern(Op op, double value, int n, const Expr* a, const Expr* b) {
     return Expr(std::move(node));
 }
 
+std::size_t max_expression_nodes() { return node_limit.load(); }
+std::size_t set_max_expression_nodes(std::size_t limit) { return node_limit.exchange(limit); }
+std::size_t live_expression_nodes() { return live_nodes.load(); }
+
 ExprNode::~ExprNode() {
+    live_nodes.fetch_sub(1, std::memory_order_relaxed);
     // Operands whose last owner is this node are queued instead of destroyed
     // here; the outermost destructor on the thread drains the queue. The
     // queue is reached through a plain pointer, never destroyed, so nodes

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "zeroset/expr/op.hpp"
@@ -67,6 +68,22 @@ struct ExprNode {
     /// recurse 100 000 destructors deep.
     ~ExprNode();
 };
+
+/// Building a node past the limit on live expression nodes (below): the
+/// expressions would take more memory than any real model needs, so the
+/// caller reports the input that asked for them instead.
+class ExpressionTooLarge : public std::length_error {
+public:
+    using std::length_error::length_error;
+};
+
+/// The most expression nodes alive at once, process-wide: 4 000 000 by
+/// default (about 1 GiB with their tapes); real models have thousands.
+std::size_t max_expression_nodes();
+/// Sets the limit (tests and the fuzz targets lower it); returns the old one.
+std::size_t set_max_expression_nodes(std::size_t limit);
+/// The expression nodes alive now.
+std::size_t live_expression_nodes();
 
 /// The coordinate variables.
 Expr var_x();

@@ -38,10 +38,6 @@ std::string plural(std::size_t n, std::string_view word) {
     return std::to_string(n) + " " + std::string(word) + (n == 1 ? "" : "s");
 }
 
-/// Parentheses, calls, unary signs and exponents each nest one level deeper;
-/// past this many levels the text is rejected rather than overflowing the stack.
-constexpr int max_nesting = 1000;
-
 class ExpressionParser {
 public:
     ExpressionParser(TokenStream& in, const ExpressionContext& context) : in_(in), context_(context) {}
@@ -60,8 +56,10 @@ private:
     class Nesting {
     public:
         Nesting(ExpressionParser& parser, const Token& at) : parser_(parser) {
-            if (++parser_.depth_ > max_nesting)
-                parser_.in_.fail(at.where, "expression nested too deeply (more than " + std::to_string(max_nesting) +
+            // Past the limit the text is rejected rather than overflowing the stack.
+            const int limit = parser_.context_.max_nesting;
+            if (++parser_.depth_ > limit)
+                parser_.in_.fail(at.where, "expression nested too deeply (more than " + std::to_string(limit) +
                                                " levels)");
         }
         ~Nesting() { --parser_.depth_; }
@@ -267,7 +265,12 @@ private:
 }  // namespace
 
 Value parse_expression(TokenStream& in, const ExpressionContext& context) {
-    return ExpressionParser(in, context).expression();
+    const SourceLocation start = in.peek().where;
+    try {
+        return ExpressionParser(in, context).expression();
+    } catch (const ExpressionTooLarge& e) {
+        in.fail(start, std::string("this expression is too large: ") + e.what() + " (docs/limits.md)");
+    }
 }
 
 bool is_builtin_name(std::string_view name) {

@@ -20,6 +20,7 @@ struct ExpressionContext {
     const Scope& scope;
     ModelLibrary& models;
     const std::filesystem::path& base_dir;  // model paths are relative to it
+    int max_nesting;                        // SceneLimits::expression_nesting
 };
 
 /// Reads one expression from `in`; stops at the first token that cannot continue it.

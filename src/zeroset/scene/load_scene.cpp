@@ -6,20 +6,21 @@
 
 namespace zeroset {
 
-Scene load_scene(const std::filesystem::path& file) {
+Scene load_scene(const std::filesystem::path& file, const SceneLimits& limits) {
     std::string text;
     try {
         text = read_text_file(file);
     } catch (const FileReadError& e) {
         throw SceneError(file.string(), std::string("cannot open the scene file: ") + e.what());
     }
-    SceneParser parser;
+    SceneParser parser(limits);
     parser.parse(file.string(), std::move(text), file.parent_path(), canonical_path(file));
     return parser.take_scene();
 }
 
-Scene parse_scene(std::string_view text, const std::string& file_name, const std::filesystem::path& base_dir) {
-    SceneParser parser;
+Scene parse_scene(std::string_view text, const std::string& file_name, const std::filesystem::path& base_dir,
+                  const SceneLimits& limits) {
+    SceneParser parser(limits);
     parser.parse(file_name, std::string(text), base_dir);
     return parser.take_scene();
 }

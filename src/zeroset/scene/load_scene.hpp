@@ -11,16 +11,18 @@
 #include "zeroset/scene/default_scene.hpp"
 #include "zeroset/scene/scene.hpp"
 #include "zeroset/scene/scene_error.hpp"
+#include "zeroset/scene/scene_limits.hpp"
 
 namespace zeroset {
 
 /// Reads and parses a scene file; its includes and models are found relative
 /// to it. A file that cannot be read is a SceneError with line 0
 /// ("file: cannot open the scene file: …").
-Scene load_scene(const std::filesystem::path& file);
+Scene load_scene(const std::filesystem::path& file, const SceneLimits& limits = {});
 
 /// Parses scene text; errors name `file_name`, and relative include and
 /// model paths start at `base_dir`.
-Scene parse_scene(std::string_view text, const std::string& file_name, const std::filesystem::path& base_dir);
+Scene parse_scene(std::string_view text, const std::string& file_name, const std::filesystem::path& base_dir,
+                  const SceneLimits& limits = {});
 
 }  // namespace zeroset

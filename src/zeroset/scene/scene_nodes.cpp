@@ -21,11 +21,6 @@ constexpr std::array<std::string_view, 5> transform_keys{"translate", "rotate", 
 constexpr std::array<std::string_view, 6> node_keywords{"object",     "group",    "union", "intersection",
                                                         "difference", "instance"};
 
-/// Blocks and bodies nest at most this deep (past it the text is refused
-/// rather than risking the stack).
-constexpr int max_nesting = 200;
-/// Loop iterations a scene may read, in all.
-constexpr long long max_iterations = 10'000'000;
 
 /// True when f is exactly 0 at 64 points spread over the bounds (a fixed
 /// pseudo-random set): x − x or x·0, which no arithmetic folds away, and
@@ -63,8 +58,9 @@ SceneError with_note(const SceneError& e, const std::string& note) {
 class SceneParser::Nesting {
 public:
     Nesting(SceneParser& parser, const Token& at) : parser_(parser) {
-        if (++parser_.depth_ > max_nesting)
-            parser_.in_->fail(at.where, "blocks nested too deeply (more than " + std::to_string(max_nesting) + " levels)");
+        const int limit = parser_.limits_.block_nesting;  // past it the text is refused rather than risking the stack
+        if (++parser_.depth_ > limit)
+            parser_.in_->fail(at.where, "blocks nested too deeply (more than " + std::to_string(limit) + " levels)");
     }
     ~Nesting() { --parser_.depth_; }
     Nesting(const Nesting&) = delete;
@@ -88,6 +84,8 @@ void SceneParser::node_statement(const NodeSink& sink) {
 }
 
 SceneNodePtr SceneParser::object(const Token& keyword) {
+    if (++objects_ > limits_.objects)
+        in_->fail(keyword.where, "the scene makes more than " + std::to_string(limits_.objects) + " objects");
     auto node = std::make_shared<SceneNode>();
     node->kind = SceneNode::Kind::Object;
     if (in_->at(TokenKind::String)) node->name = in_->next().text;
@@ -332,11 +330,11 @@ void SceneParser::loop(const Token& keyword, const std::function<void()>& body) 
         step = s;
     }
     const double span = (last - first) / step;
-    if (span > static_cast<double>(max_iterations))
-        in_->fail(keyword.where, "the loop would run more than " + std::to_string(max_iterations) + " times");
+    if (span > static_cast<double>(limits_.loop_iterations))
+        in_->fail(keyword.where, "the loop would run more than " + std::to_string(limits_.loop_iterations) + " times");
     const long long count = span < 0.0 ? 0 : static_cast<long long>(std::floor(span * (1.0 + 1e-12))) + 1;
-    if ((iterations_ += count) > max_iterations)
-        in_->fail(keyword.where, "the scene's loops would run more than " + std::to_string(max_iterations) +
+    if ((iterations_ += count) > limits_.loop_iterations)
+        in_->fail(keyword.where, "the scene's loops would run more than " + std::to_string(limits_.loop_iterations) +
                                      " times in all");
     if (!in_->at(TokenKind::LeftBrace)) in_->fail_expected("'{' to start the loop's body");
     const Nesting nesting(*this, keyword);

@@ -25,7 +25,6 @@ constexpr std::array<std::string_view, 5> material_keys{"color", "ambient", "dif
 
 constexpr int max_image_size = 65536;
 /// Files including files, at most this deep (the reading recurses).
-constexpr std::size_t max_include_depth = 64;
 constexpr int max_samples_per_pixel = 1024;
 
 bool contains(std::span<const std::string_view> names, std::string_view name) {
@@ -41,7 +40,7 @@ std::vector<std::string_view> method_names() {
 
 }  // namespace
 
-SceneParser::SceneParser() = default;
+SceneParser::SceneParser(const SceneLimits& limits) : limits_(limits) {}
 SceneParser::~SceneParser() = default;
 
 void SceneParser::parse(std::string file_name, std::string text, const std::filesystem::path& base_dir,
@@ -201,8 +200,8 @@ void SceneParser::include(const Token& keyword) {
         in_->fail(keyword.where, "include cycle: " + chain + path.string());
     }
     if (included_.contains(canonical)) return;  // each file is read once per scene
-    if (open_files_.size() >= max_include_depth)
-        in_->fail(keyword.where, "includes nested too deeply (more than " + std::to_string(max_include_depth) +
+    if (open_files_.size() >= limits_.include_depth)
+        in_->fail(keyword.where, "includes nested too deeply (more than " + std::to_string(limits_.include_depth) +
                                      " files, each including the next)");
     std::string text;
     try {
@@ -330,7 +329,7 @@ void SceneParser::once(std::optional<std::string>& first, const Token& keyword, 
 
 SceneParser::Located<Value> SceneParser::value() {
     const SourceLocation where = in_->peek().where;
-    return {parse_expression(*in_, {scope_, models_, dir_}), where};
+    return {parse_expression(*in_, {scope_, models_, dir_, limits_.expression_nesting}), where};
 }
 
 SceneParser::Located<double> SceneParser::number(std::string_view what) {

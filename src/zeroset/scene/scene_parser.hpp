@@ -21,6 +21,7 @@
 
 #include "zeroset/scene/model_library.hpp"
 #include "zeroset/scene/scene.hpp"
+#include "zeroset/scene/scene_limits.hpp"
 #include "zeroset/scene/scope.hpp"
 #include "zeroset/scene/token_stream.hpp"
 
@@ -46,7 +47,7 @@ struct ShapeDefinition {
 
 class SceneParser {
 public:
-    SceneParser();
+    explicit SceneParser(const SceneLimits& limits = {});
     ~SceneParser();
     SceneParser(const SceneParser&) = delete;
     SceneParser& operator=(const SceneParser&) = delete;
@@ -159,6 +160,8 @@ private:
     std::filesystem::path dir_;  // its directory
     int depth_ = 0;              // nested blocks and bodies being read
     long long iterations_ = 0;   // loop iterations read so far
+    long long objects_ = 0;      // objects made so far
+    SceneLimits limits_;
 };
 
 }  // namespace zeroset

@@ -44,9 +44,9 @@ struct RootFinderSettings {
     /// Segments narrower than this that may still hold a root are reported as
     /// a (tangent) hit; the scene scale times 1e-10 by default.
     double tangent_width = 1e-10;
-    /// Segments the isolating methods may visit on one ray before they give up
-    /// (status Failed) — a guard against pathological rays, never reached on
-    /// the ray suite.
+    /// Segments the isolating methods and sphere tracing may visit on one
+    /// query before they give up (status Failed) — a guard against
+    /// pathological rays, never reached on the ray suite.
     long max_segments = 1L << 20;
     /// Sphere tracing's hit tolerance before refinement.
     double sphere_epsilon = 1e-6;

@@ -11,17 +11,19 @@ namespace {
 double far_end(Span span) { return std::max(std::abs(span.t0), std::abs(span.t1)); }
 }  // namespace
 
-SphereMethod::SphereMethod(const RootFinderSettings& settings) : tracer_({settings.sphere_epsilon, 16}) {}
+SphereMethod::SphereMethod(const RootFinderSettings& settings)
+    : tracer_({settings.sphere_epsilon, 16, settings.max_segments}) {}
 
-std::optional<double> SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCounters& counters) {
+Crossing SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCounters& counters) {
     const std::uint64_t nans = counters.nan_evaluations;
-    const auto t = tracer_.first_crossing(h, span, side, counters);
-    if (!t || counters.nan_evaluations != nans) return std::nullopt;
+    const Crossing marched = tracer_.first_crossing(h, span, side, counters);
+    const std::optional<double> t = marched.t;
+    if (!t || counters.nan_evaluations != nans) return {std::nullopt, marched.gave_up};
     // The surface is crossed in [t, t + 2ε]: refine to full precision. With
     // no sign change before t1, the crossing lies just past the span. (ε as
     // the march took it: at the span's far end, its largest.)
     const double end = std::min(*t + 2.0 * tracer_.step_epsilon(h, far_end(span)), span.t1);
-    return refine_sign_change(h, *t, end, counters);
+    return {refine_sign_change(h, *t, end, counters)};
 }
 
 HitResult SphereMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {
@@ -29,8 +31,9 @@ HitResult SphereMethod::first_hit(RayFunction& h, Span span, TraceCounters& coun
     if (std::isnan(start)) return {std::nullopt, HitStatus::Failed};
     if (start <= 0.0) return {span.t0, HitStatus::Ok};  // the ray starts in the solid
     const std::uint64_t nans = counters.nan_evaluations;
-    if (const auto t = crossing(h, span, 1.0, counters)) return {t, HitStatus::Ok};
-    return {std::nullopt, counters.nan_evaluations != nans ? HitStatus::Failed : HitStatus::NoHit};
+    const Crossing hit = crossing(h, span, 1.0, counters);
+    if (hit.t) return {hit.t, HitStatus::Ok};
+    return {std::nullopt, hit.gave_up || counters.nan_evaluations != nans ? HitStatus::Failed : HitStatus::NoHit};
 }
 
 HitStatus SphereMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
@@ -40,8 +43,11 @@ HitStatus SphereMethod::all_hits(RayFunction& h, Span span, std::vector<double>&
     const std::uint64_t nans = counters.nan_evaluations;
     double side = start > 0.0 ? 1.0 : -1.0;
     double t = span.t0;
+    bool gave_up = false;
     while (t < span.t1) {
-        const auto root = crossing(h, {t, span.t1}, side, counters);
+        const Crossing next = crossing(h, {t, span.t1}, side, counters);
+        gave_up = next.gave_up;
+        const std::optional<double> root = next.t;
         if (!root) break;
         hits.push_back(*root);
         // Resume just past the root, on whichever side the ray is there: a
@@ -52,7 +58,7 @@ HitStatus SphereMethod::all_hits(RayFunction& h, Span span, std::vector<double>&
         if (std::isnan(past)) break;
         side = past > 0.0 ? 1.0 : -1.0;
     }
-    if (counters.nan_evaluations != nans) return HitStatus::Failed;
+    if (gave_up || counters.nan_evaluations != nans) return HitStatus::Failed;
     return hits.size() > before ? HitStatus::Ok : HitStatus::NoHit;
 }
 

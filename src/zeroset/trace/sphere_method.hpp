@@ -18,8 +18,8 @@ public:
 
 private:
     /// The first crossing in the span (entering the solid when side = 1,
-    /// leaving it when −1), refined.
-    std::optional<double> crossing(RayFunction& h, Span span, double side, TraceCounters& counters);
+    /// leaving it when −1), refined; nothing after a NaN.
+    Crossing crossing(RayFunction& h, Span span, double side, TraceCounters& counters);
 
     SphereTracer tracer_;
 };

@@ -15,11 +15,12 @@ double SphereTracer::step_epsilon(const RayFunction& h, double t) const {
     return std::max(h.to_t(settings_.epsilon), 4.0 * ulp);
 }
 
-std::optional<double> SphereTracer::march(RayFunction& h, Span span, double side, TraceCounters& counters) const {
+Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounters& counters) const {
     const auto value_at = [&](double t) { return side * h.value(t, counters); };
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
-    while (!segments.empty()) {
+    for (long visited = 0; !segments.empty(); ++visited) {
+        if (visited == settings_.max_segments) return {std::nullopt, true};
         const Segment segment = segments.pop();
         const auto [a, b, depth] = segment;
         const double eps = step_epsilon(h, std::max(std::abs(a), std::abs(b)));
@@ -30,7 +31,7 @@ std::optional<double> SphereTracer::march(RayFunction& h, Span span, double side
         const Interval value = side > 0.0 ? enclosure : -enclosure;
         if (value.is_empty()) {  // f is undefined (NaN) all over this segment
             h.note_nan(h.ray().at(0.5 * (a + b)), counters);
-            return std::nullopt;
+            return {};
         }
         if (value.lo > 0.0) continue;
 
@@ -45,30 +46,30 @@ std::optional<double> SphereTracer::march(RayFunction& h, Span span, double side
             // only a sign change at its ends shows a root — unless it is a
             // pole, where f changes sign without one (−1/x at x = 0).
             const double fa = value_at(a);
-            if (std::isnan(fa)) return std::nullopt;
-            if (fa <= 0.0) return a;
+            if (std::isnan(fa)) return {};
+            if (fa <= 0.0) return {a};
             const double fb = value_at(b);
-            if (std::isnan(fb)) return std::nullopt;
+            if (std::isnan(fb)) return {};
             if (fb <= 0.0) {
                 const bool unbounded = !std::isfinite(value.lo) || !std::isfinite(value.hi);
                 if (unbounded && closes_in_on_a_pole(h, a, b, counters)) continue;
-                return a;  // the crossing is in [a, b], within the 2ε the caller refines
+                return {a};  // the crossing is in [a, b], within the 2ε the caller refines
             }
             continue;
         }
         double t = a;
         for (int steps = 0;; ++steps) {
             const double f = value_at(t);
-            if (std::isnan(f)) return std::nullopt;
-            if (f <= 0.0) return t;  // on or inside the surface (only at a segment's start)
+            if (std::isnan(f)) return {};
+            if (f <= 0.0) return {t};  // on or inside the surface (only at a segment's start)
             if (f < lipschitz * eps) {
                 // Fig. 12, step 2a: the distance bound says the surface may be
                 // within ε. A sign change just ahead confirms it; otherwise L
                 // is too loose here, so tighten it by splitting what is left.
                 const double ahead = t + 2.0 * eps;
                 const double f_ahead = value_at(ahead);
-                if (std::isnan(f_ahead)) return std::nullopt;
-                if (f_ahead <= 0.0) return t;
+                if (std::isnan(f_ahead)) return {};
+                if (f_ahead <= 0.0) return {t};
                 if (b - ahead > 2.0 * eps && segments.can_split(segment)) {
                     segments.split(segment, ahead);
                     break;
@@ -85,7 +86,7 @@ std::optional<double> SphereTracer::march(RayFunction& h, Span span, double side
             }
         }
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace zeroset

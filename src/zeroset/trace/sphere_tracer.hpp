@@ -20,7 +20,11 @@
 // ε is a length in space; along the ray it is ε/|x_d|, and never less than a
 // few units in the last place of t, so that every step moves t. Every step
 // stays in a segment whose L holds, so the first hit is never stepped over;
-// every step or split makes progress of at least ε, so the march always ends.
+// every step or split makes progress of at least ε, so the march always ends:
+// within about 3 × (the span's length in space) / ε segments and steps,
+// 3·10⁶ for a ray across the object's bounds — and within `max_segments`
+// segments visited, past which it gives up (a pathological function with
+// many near-grazes would otherwise spend seconds on one ray).
 #pragma once
 
 #include <optional>
@@ -35,6 +39,15 @@ struct SphereTraceSettings {
     double epsilon = 1e-6;
     /// Steps taken in one segment before it is split to tighten its L.
     int steps_before_split = 16;
+    /// Segments one march may visit before it gives up.
+    long max_segments = 1L << 20;
+};
+
+/// Where a march ended: at a crossing, at none, or given up (past
+/// max_segments; also nothing when it met a NaN, which h records).
+struct Crossing {
+    std::optional<double> t;
+    bool gave_up = false;
 };
 
 class SphereTracer {
@@ -44,17 +57,17 @@ public:
     /// The smallest t in span at which the ray meets the surface, to within
     /// ε; nothing if it does not. The surface is crossed in [t, t + 2·ε_t],
     /// ε_t = step_epsilon(h, …).
-    std::optional<double> first_hit(RayFunction& h, Span span, TraceCounters& counters) const {
+    Crossing first_hit(RayFunction& h, Span span, TraceCounters& counters) const {
         return first_crossing(h, span, 1.0, counters);
     }
     /// The same for the function side·f: with side = −1, the first point
     /// where a ray inside the solid leaves it. A NaN is recorded in h (and
     /// counted); then the answer is nothing. h is back on its full tape
     /// when this returns.
-    std::optional<double> first_crossing(RayFunction& h, Span span, double side, TraceCounters& counters) const {
-        const std::optional<double> t = march(h, span, side, counters);
+    Crossing first_crossing(RayFunction& h, Span span, double side, TraceCounters& counters) const {
+        const Crossing crossing = march(h, span, side, counters);
         h.use_full_tape();
-        return t;
+        return crossing;
     }
 
     /// ε along the ray near t: ε/|x_d|, but at least 4 ulps of t.
@@ -63,7 +76,7 @@ public:
     [[nodiscard]] const SphereTraceSettings& settings() const { return settings_; }
 
 private:
-    std::optional<double> march(RayFunction& h, Span span, double side, TraceCounters& counters) const;
+    Crossing march(RayFunction& h, Span span, double side, TraceCounters& counters) const;
 
     SphereTraceSettings settings_;
 };

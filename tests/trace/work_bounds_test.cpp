@@ -1,0 +1,48 @@
+// The per-query work bound of the subdividing methods (max_segments,
+// root_finder.hpp): with the bound at the number of segments a ray needs the
+// hit is found; one below, the method gives up with status Failed instead of
+// answering wrongly — and never runs on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "zeroset/trace/bounds.hpp"
+#include "zeroset/trace/root_finder.hpp"
+
+namespace zeroset {
+namespace {
+
+TEST(WorkBounds, EverySubdividingMethodGivesUpPastMaxSegments) {
+    const Expr x = var_x(), y = var_y(), z = var_z();
+    const Tape tape(square(x) + square(y) + square(z) - 1.0, SlotLayout::OnePerValue);
+    const Bounds bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
+    const Ray ray{{-3, 0.999, 0}, {1, 0, 0}};  // a near graze: many segments to isolate it
+    const Span span = *bounds.clip(ray, 0.0, INFINITY);
+    const double expected = 3.0 - std::sqrt(1.0 - 0.999 * 0.999);
+    for (const Method method : {Method::Interval, Method::Lg, Method::Sphere}) {
+        const auto run = [&](long max_segments) {
+            RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
+            settings.max_segments = max_segments;
+            RayFunction h(tape);
+            h.set_ray(ray);
+            TraceCounters counters;
+            return make_root_finder(method, tape, settings)->first_hit(h, span, counters);
+        };
+        long needed = 1;
+        while (needed < 100000 && run(needed).status != HitStatus::Ok) needed *= 2;
+        long lo = needed / 2, hi = needed;  // run(lo) gave up, run(hi) did not
+        while (hi - lo > 1) {
+            const long mid = (lo + hi) / 2;
+            (run(mid).status == HitStatus::Ok ? hi : lo) = mid;
+        }
+        const HitResult at = run(hi), below = run(hi - 1);
+        EXPECT_GT(hi, 2) << method_name(method) << ": the ray needs a few segments";
+        EXPECT_EQ(at.status, HitStatus::Ok) << method_name(method);
+        EXPECT_NEAR(at.t.value_or(NAN), expected, 1e-12) << method_name(method);
+        EXPECT_EQ(below.status, HitStatus::Failed) << method_name(method) << " with " << hi - 1 << " segments";
+        EXPECT_FALSE(below.t.has_value()) << method_name(method);
+    }
+}
+
+}  // namespace
+}  // namespace zeroset
