@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <sstream>
 #include <string>
+#include <string_view>
 
 #include "zeroset/scene/file_text.hpp"
 
@@ -45,19 +45,18 @@ bool parse_number(const std::string& word, double& value, std::string& problem) 
 
 }  // namespace
 
-std::vector<Ray> read_ray_list(const std::filesystem::path& file) {
-    std::istringstream in;
-    try {
-        in.str(read_text_file(file));
-    } catch (const FileReadError& e) {
-        throw RayListError(file.string() + ": cannot open the ray list: " + e.what());
-    }
+std::vector<Ray> parse_ray_list(std::string_view text, const std::string& name) {
     std::vector<Ray> rays;
-    std::string line;
-    for (int number = 1; std::getline(in, line); ++number) {
-        const std::vector<std::string> w = words(line);
+    int number = 0;
+    for (std::size_t begin = 0; begin < text.size();) {
+        // A line ends at LF, CR LF or a lone CR.
+        std::size_t end = text.find_first_of("\r\n", begin);
+        if (end == std::string_view::npos) end = text.size();
+        const std::vector<std::string> w = words(std::string(text.substr(begin, end - begin)));
+        begin = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
+        ++number;
         if (w.empty()) continue;
-        const std::string where = file.string() + ":" + std::to_string(number) + ": ";
+        const std::string where = name + ":" + std::to_string(number) + ": ";
         if (w.size() != 6)
             throw RayListError(where + "expected six numbers 'ox oy oz dx dy dz', got " + std::to_string(w.size()) +
                                (w.size() == 1 ? " word" : " words"));
@@ -69,9 +68,18 @@ std::vector<Ray> read_ray_list(const std::filesystem::path& file) {
         if (ray.dir == Vec3d{}) throw RayListError(where + "the direction is zero");
         rays.push_back(ray);
     }
-    if (in.bad()) throw RayListError(file.string() + ": cannot read the ray list");
-    if (rays.empty()) throw RayListError(file.string() + ": the ray list holds no rays");
+    if (rays.empty()) throw RayListError(name + ": the ray list holds no rays");
     return rays;
+}
+
+std::vector<Ray> read_ray_list(const std::filesystem::path& file) {
+    std::string text;
+    try {
+        text = read_text_file(file);
+    } catch (const FileReadError& e) {
+        throw RayListError(file.string() + ": cannot open the ray list: " + e.what());
+    }
+    return parse_ray_list(text, file.string());
 }
 
 }  // namespace zeroset::cli

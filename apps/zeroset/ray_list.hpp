@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "zeroset/math/ray.hpp"
@@ -21,5 +23,7 @@ public:
 /// file, a line that is not six finite numbers, a zero direction, or a file
 /// with no rays.
 std::vector<Ray> read_ray_list(const std::filesystem::path& file);
+/// The same for text already read; messages name `name` as the file.
+std::vector<Ray> parse_ray_list(std::string_view text, const std::string& name);
 
 }  // namespace zeroset::cli

@@ -58,6 +58,11 @@ private:
 };
 
 struct ExprNode {
+    ExprNode(Op op_, int exponent_, double value_, bool constant_valued_, std::shared_ptr<const ExprNode> a_,
+             std::shared_ptr<const ExprNode> b_)
+        : op(op_), exponent(exponent_), value(value_), constant_valued(constant_valued_), a(std::move(a_)),
+          b(std::move(b_)) {}
+
     Op op;
     int exponent;  // Powi only
     double value;  // Const only

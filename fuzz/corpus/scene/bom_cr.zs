@@ -1,0 +1,1 @@
+﻿object { surface x }let a = "a\0b"

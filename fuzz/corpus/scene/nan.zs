@@ -1,0 +1,1 @@
+object { surface 0/0 + x }
