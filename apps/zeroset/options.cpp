@@ -48,14 +48,24 @@ std::optional<std::string> Options::value(const std::string& name) const {
     return std::nullopt;
 }
 
-std::optional<int> Options::integer(const std::string& name) const {
-    const auto text = value(name);
+namespace {
+
+template <class Number>
+std::optional<Number> whole_number(const std::optional<std::string>& text, const std::string& name) {
     if (!text) return std::nullopt;
-    int result = 0;
+    Number result = 0;
     const auto [end, error] = std::from_chars(text->data(), text->data() + text->size(), result);
     if (error != std::errc() || end != text->data() + text->size())
         throw UsageError("option " + name + " needs a whole number, got '" + *text + "'");
     return result;
+}
+
+}  // namespace
+
+std::optional<int> Options::integer(const std::string& name) const { return whole_number<int>(value(name), name); }
+
+std::optional<std::uint64_t> Options::count(const std::string& name) const {
+    return whole_number<std::uint64_t>(value(name), name);
 }
 
 }  // namespace zeroset::cli

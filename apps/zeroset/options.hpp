@@ -2,6 +2,7 @@
 // `-o value`, flags, and positional arguments, with clear usage errors.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -25,6 +26,8 @@ public:
     [[nodiscard]] std::optional<std::string> value(const std::string& name) const;
     /// The option's value as an integer, or nothing when absent.
     [[nodiscard]] std::optional<int> integer(const std::string& name) const;
+    /// The option's value as a count (a whole number ≥ 0 up to 2^64 − 1), or nothing when absent.
+    [[nodiscard]] std::optional<std::uint64_t> count(const std::string& name) const;
     [[nodiscard]] const std::vector<std::string>& positional() const { return positional_; }
 
 private:

@@ -44,6 +44,9 @@ Options:
                       exact gradient, eq. 33), fd (forward differences, eq. 34)
                       or central (central differences); default: the object's,
                       else analytic (see docs/rendering.md#normals)
+  --max-evaluations N stop with an error once the render has spent N
+                      evaluations of the surfaces (default: 16384 per camera
+                      ray, at least 4194304; see docs/limits.md)
   -q, --quiet         no progress bar and no summary line
   -h, --help          this text
 
@@ -55,7 +58,7 @@ A progress bar is drawn on stderr when it is a terminal; a one-line summary
 
 int render_command(const std::vector<std::string>& args) {
     const Options options(args, {"-o", "--output", "--width", "--height", "--spp", "--threads", "--method",
-                                 "--solver", "--normals"},
+                                 "--solver", "--normals", "--max-evaluations"},
                           {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(render_usage, stdout);
@@ -89,6 +92,7 @@ int render_command(const std::vector<std::string>& args) {
         settings.normals = normal_mode_from_name(*name);
         if (!settings.normals) throw UsageError("unknown normal mode '" + *name + "' (try zeroset render --help)");
     }
+    settings.max_evaluations = options.count("--max-evaluations");
     validate(settings);
 
     const bool quiet = options.has("-q") || options.has("--quiet");

@@ -129,6 +129,18 @@ TEST_F(Cli, NanProducingFunctionIsAnErrorAndWritesNothing) {
     EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
+TEST_F(Cli, ARenderPastItsEvaluationBudgetIsAnErrorAndWritesNothing) {
+    const Outcome spent = run("render -o out.png --width 16 --height 12 --max-evaluations 100");
+    EXPECT_EQ(spent.status, 1);
+    EXPECT_NE(spent.err.find("more than 100 evaluations"), std::string::npos) << spent.err;
+    const Outcome malformed = run("render -o out.png --width 16 --height 12 --max-evaluations lots");
+    EXPECT_EQ(malformed.status, 2);
+    EXPECT_NE(malformed.err.find("--max-evaluations"), std::string::npos) << malformed.err;
+    EXPECT_EQ(file_count(), 0u);
+    const Outcome enough = run("render -o out.png --width 16 --height 12 --max-evaluations 100000000");
+    EXPECT_EQ(enough.status, 0) << enough.err;
+}
+
 /// Every scene shipped in scenes/ renders at a small size and covers a
 /// sensible part of the frame (something is visible, not everything).
 TEST_F(Cli, EveryShippedSceneRendersWithSensibleCoverage) {

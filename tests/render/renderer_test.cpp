@@ -326,3 +326,41 @@ TEST(Renderer, ALightAtTheHitPointLightsNothingThere) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+// The render-wide evaluation budget: a render that needs exactly the budget
+// finishes; one evaluation less stops it with an error naming the option.
+TEST(Renderer, TheEvaluationBudgetStopsARenderJustPastIt) {
+    const Scene scene = blinn_scene();
+    RenderSettings settings = small();
+    settings.threads = 1;
+    const std::uint64_t needed = render(scene, settings).stats.counters.evaluations();
+    ASSERT_GT(needed, 100U);
+    settings.max_evaluations = needed;
+    EXPECT_EQ(render(scene, settings).stats.counters.evaluations(), needed);
+    settings.max_evaluations = needed - 1;
+    try {
+        render(scene, settings);
+        FAIL() << "expected a RenderError";
+    } catch (const RenderError& e) {
+        EXPECT_NE(std::string(e.what()).find("--max-evaluations"), std::string::npos) << e.what();
+    }
+    settings.max_evaluations = 0;
+    EXPECT_THROW(render(scene, settings), RenderError);
+}
+
+TEST(Renderer, TheDefaultEvaluationBudgetGrowsWithTheRays) {
+    RenderSettings settings;
+    settings.width = 16;
+    settings.height = 12;
+    EXPECT_EQ(default_evaluation_budget(settings), least_evaluation_budget);
+    settings.width = 640;
+    settings.height = 480;
+    settings.samples_per_pixel = 4;
+    EXPECT_EQ(default_evaluation_budget(settings), 640ULL * 480 * 4 * evaluations_per_camera_ray);
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -1,7 +1,7 @@
-// The per-query work bound of the subdividing methods (max_segments,
-// root_finder.hpp): with the bound at the number of segments a ray needs the
-// hit is found; one below, the method gives up with status Failed instead of
-// answering wrongly — and never runs on.
+// The per-query work bounds (root_finder.hpp): with max_segments at the
+// number of segments a ray needs the hit is found, one below the method gives
+// up with status Failed instead of answering wrongly — and never runs on;
+// all_hits collects max_hits roots, and gives up on a ray with more.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,6 +41,30 @@ TEST(WorkBounds, EverySubdividingMethodGivesUpPastMaxSegments) {
         EXPECT_NEAR(at.t.value_or(NAN), expected, 1e-12) << method_name(method);
         EXPECT_EQ(below.status, HitStatus::Failed) << method_name(method) << " with " << hi - 1 << " segments";
         EXPECT_FALSE(below.t.has_value()) << method_name(method);
+    }
+}
+
+TEST(WorkBounds, AllHitsGivesUpPastMaxHits) {
+    const Tape tape(sin(var_x()), SlotLayout::OnePerValue);
+    const Bounds bounds = Bounds::make_box({{-100, -1, -1}, {100, 1, 1}});
+    const Ray ray{{0, 0, 0}, {1, 0, 0}};
+    const Span span{0.5, 10.5 * M_PI};  // the roots π, 2π, …, 10π
+    for (const Method method : {Method::Interval, Method::Lg, Method::Sphere, Method::RegulaFalsi, Method::Bisection}) {
+        const auto run = [&](std::size_t max_hits, std::vector<double>& hits) {
+            RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
+            settings.max_hits = max_hits;
+            RayFunction h(tape);
+            h.set_ray(ray);
+            TraceCounters counters;
+            return make_root_finder(method, tape, settings)->all_hits(h, span, hits, counters);
+        };
+        std::vector<double> at, below;
+        EXPECT_EQ(run(10, at), HitStatus::Ok) << method_name(method);
+        ASSERT_EQ(at.size(), 10U) << method_name(method);
+        for (std::size_t k = 0; k < at.size(); ++k)
+            EXPECT_NEAR(at[k], static_cast<double>(k + 1) * M_PI, 1e-9) << method_name(method);
+        EXPECT_EQ(run(9, below), HitStatus::Failed) << method_name(method);
+        EXPECT_EQ(below.size(), 9U) << method_name(method) << ": the roots found up to the cap are kept";
     }
 }
 

@@ -1,6 +1,7 @@
 // What to render and how: image size, samples, threads, progress reporting.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -21,6 +22,10 @@ struct RenderSettings {
     std::optional<PolynomialSolver> solver;
     /// When given, how every object's normals are computed.
     std::optional<NormalMode> normals;
+    /// Evaluations of f (point, interval and gradient) the whole render may
+    /// spend before it stops with a RenderError; default_evaluation_budget
+    /// when absent.
+    std::optional<std::uint64_t> max_evaluations;
     /// Called after every finished tile with (tiles done, tiles in all), from
     /// one thread at a time.
     std::function<void(int, int)> on_progress;
@@ -37,6 +42,16 @@ inline constexpr int max_image_side = 65536;
 /// The most pixels an image may have: 2^28, whose linear float image takes
 /// 3 GiB (plus the 8-bit copy a PNG is encoded from).
 inline constexpr long long max_image_pixels = 1LL << 28;
+
+/// The evaluations a render may spend by default: 2^14 per camera ray on
+/// average (more than a hundred times what the project's scenes take,
+/// shadow rays included), and at least 2^22, so that a tiny image still
+/// affords the worst single ray. It stops a render that would otherwise
+/// take hours — a surface with detail finer than a pixel everywhere, or
+/// bounds far larger than the surface — with a message, not a hang.
+inline constexpr std::uint64_t evaluations_per_camera_ray = 1U << 14;
+inline constexpr std::uint64_t least_evaluation_budget = 1U << 22;
+[[nodiscard]] std::uint64_t default_evaluation_budget(const RenderSettings& settings);
 
 /// Throws RenderError unless width × height ≤ max_image_pixels, saying how
 /// much memory the image would take.

@@ -40,13 +40,37 @@ struct ThreadTotals {
     ShadingCounters shading;
     std::optional<TraceScratch::NanRecord> first_nan;
     std::optional<std::pair<int, int>> non_finite_pixel;  // the first pixel whose colour overflowed
+    std::uint64_t evaluations_counted = 0;                // of this thread's, added to the shared total
+};
+
+/// What the threads share to stop early: the evaluations spent against the
+/// budget, and whether any thread has met a reason to stop (a NaN, the
+/// budget spent) — the render's result is an error then, and the rest of
+/// the image is not worth tracing.
+struct StopSignal {
+    std::uint64_t budget = 0;
+    std::atomic<std::uint64_t> spent{0};
+    std::atomic<bool> over_budget{false};
+    std::atomic<bool> stop{false};
+
+    /// Adds the thread's evaluations since its last report; checked after
+    /// every pixel, so a render overruns its budget by at most one pixel
+    /// per thread.
+    void report(SceneTracer& tracer, ThreadTotals& totals) {
+        const std::uint64_t now = tracer.counters().evaluations();
+        const std::uint64_t total = spent.fetch_add(now - totals.evaluations_counted) + (now - totals.evaluations_counted);
+        totals.evaluations_counted = now;
+        if (total > budget) over_budget = true;
+        if (total > budget || tracer.first_nan()) stop = true;
+    }
 };
 
 void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera, int spp, SceneTracer& tracer,
-                 Image& image, ThreadTotals& totals) {
+                 Image& image, ThreadTotals& totals, StopSignal& signal) {
     constexpr double far = std::numeric_limits<double>::infinity();
     for (int py = tile.y0; py < tile.y1; ++py) {
         for (int px = tile.x0; px < tile.x1; ++px) {
+            if (signal.stop.load(std::memory_order_relaxed)) return;
             Vec3d sum{};
             for (int s = 0; s < spp; ++s) {
                 const SubPixel sub = pixel_sample(px, py, s, spp);
@@ -65,6 +89,7 @@ void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera,
                 !totals.non_finite_pixel)
                 totals.non_finite_pixel = {px, py};
             image.at(px, py) = pixel;
+            signal.report(tracer, totals);
         }
     }
 }
@@ -76,7 +101,24 @@ void check_camera(const Camera& camera) {
         throw RenderError("the camera's `up` is parallel to its view direction");
 }
 
+std::string budget_message(std::uint64_t budget) {
+    std::ostringstream message;
+    message << "the render was stopped when it had spent more than " << budget
+            << " evaluations of the surfaces (the budget: " << evaluations_per_camera_ray
+            << " per camera ray, at least " << least_evaluation_budget
+            << "): an object is far too costly for its method here — a surface with detail finer than a pixel "
+               "everywhere, say, or bounds far larger than the surface. Try another method or tighter bounds, or "
+               "raise the budget (--max-evaluations)";
+    return message.str();
+}
+
 }  // namespace
+
+std::uint64_t default_evaluation_budget(const RenderSettings& settings) {
+    const auto rays = static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height) *
+                      static_cast<std::uint64_t>(std::max(1, settings.samples_per_pixel));
+    return std::max(least_evaluation_budget, rays * evaluations_per_camera_ray);
+}
 
 void require_in_range(int value, int low, int high, const char* what) {
     if (value >= low && value <= high) return;
@@ -102,6 +144,7 @@ void validate(const RenderSettings& s) {
     require_image_fits(s.width, s.height);
     require_in_range(s.samples_per_pixel, 1, max_samples_per_pixel, "samples per pixel");
     require_in_range(s.threads, 0, 4096, "threads");
+    if (s.max_evaluations && *s.max_evaluations == 0) throw RenderError("the evaluation budget must be at least 1");
 }
 
 RenderResult render(const Scene& scene, const RenderSettings& settings) {
@@ -122,11 +165,13 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     std::atomic<std::size_t> next_tile{0};
     std::mutex progress_mutex;
     int tiles_done = 0;
+    StopSignal signal;
+    signal.budget = settings.max_evaluations.value_or(default_evaluation_budget(settings));
 
     const auto worker = [&](ThreadTotals& mine) {
         SceneTracer tracer(prepared);
         for (std::size_t i = next_tile++; i < tiles.size(); i = next_tile++) {
-            render_tile(tiles[i], scene, camera, settings.samples_per_pixel, tracer, result.image, mine);
+            render_tile(tiles[i], scene, camera, settings.samples_per_pixel, tracer, result.image, mine, signal);
             if (settings.on_progress) {
                 std::lock_guard lock(progress_mutex);
                 settings.on_progress(++tiles_done, static_cast<int>(tiles.size()));
@@ -149,6 +194,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
         stats.counters += t.stats.counters;
         if (t.first_nan) throw RenderError(nan_message(*t.first_nan));
     }
+    if (signal.over_budget) throw RenderError(budget_message(signal.budget));
     for (const ThreadTotals& t : totals) {
         if (!t.non_finite_pixel) continue;
         const auto [px, py] = *t.non_finite_pixel;

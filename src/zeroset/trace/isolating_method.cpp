@@ -14,7 +14,9 @@ HitResult IsolatingMethod::first_hit(RayFunction& h, Span span, TraceCounters& c
         first = t;
         return false;
     };
+    const std::uint64_t nans = counters.nan_evaluations;
     const HitStatus status = isolate(h, span, counters, take_first);
+    if (counters.nan_evaluations != nans) return {std::nullopt, HitStatus::Failed};  // H undefined on the way
     if (first) return {first, HitStatus::Ok};
     return {std::nullopt, status};
 }
@@ -38,10 +40,15 @@ HitStatus IsolatingMethod::all_hits(RayFunction& h, Span span, std::vector<doubl
         // A root on the boundary of two segments is found from both sides, and
         // a tangent root may span neighbouring finest segments: keep one.
         if (hits.size() == before || t - hits.back() > merge_width) hits.push_back(t);
-        return true;
+        return hits.size() - before <= settings_.max_hits;  // one past the cap shows there are more
     };
+    const std::uint64_t nans = counters.nan_evaluations;
     const HitStatus status = isolate(h, span, counters, collect);
-    if (status == HitStatus::Failed) return status;
+    if (status == HitStatus::Failed || counters.nan_evaluations != nans) return HitStatus::Failed;
+    if (hits.size() - before > settings_.max_hits) {
+        hits.pop_back();
+        return HitStatus::Failed;
+    }
     return hits.size() > before ? HitStatus::Ok : HitStatus::NoHit;
 }
 

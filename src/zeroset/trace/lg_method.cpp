@@ -21,8 +21,9 @@ double least_of(const Interval& x) {
 HitStatus LgMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) {
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
+    const std::uint64_t nans = counters.nan_evaluations;
     for (long visited = 0; !segments.empty(); ++visited) {
-        if (visited == settings_.max_segments) return HitStatus::Failed;
+        if (visited == settings_.max_segments || counters.nan_evaluations != nans) return HitStatus::Failed;
         const Segment s = segments.pop();
         const double tm = 0.5 * (s.a + s.b);                      // Fig. 11, step 1
         const double r = std::max(tm - s.a, s.b - tm);             // exact half-width bound

@@ -40,8 +40,9 @@ bool closes_in_on_a_pole(RayFunction& h, double a, double b, TraceCounters& coun
 std::optional<double> finest_segment_hit(RayFunction& h, double a, double b, const Jet<Interval>& e,
                                          TraceCounters& counters) {
     const auto bounded = [](const Interval& x) { return !x.is_empty() && std::isfinite(x.lo) && std::isfinite(x.hi); };
-    if (bounded(e.d1)) return a;
     const double fa = h.value(a, counters), fb = h.value(b, counters);
+    if (std::isnan(fa) || std::isnan(fb)) return std::nullopt;  // H undefined: no root (the caller fails)
+    if (bounded(e.d1)) return a;
     if (fa > 0.0 && fb > 0.0) return std::nullopt;  // no sign at the ends shows a root
     // Where the enclosure of H is unbounded too, a sign change may be a pole.
     if (!bounded(e.v) && closes_in_on_a_pole(h, a, b, counters)) return std::nullopt;

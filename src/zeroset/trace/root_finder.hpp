@@ -48,6 +48,10 @@ struct RootFinderSettings {
     /// query before they give up (status Failed) — a guard against
     /// pathological rays, never reached on the ray suite.
     long max_segments = 1L << 20;
+    /// Roots all_hits may collect on one query before it gives up (status
+    /// Failed): far more than a ray can cross one object in any picture,
+    /// and a bound on the span lists of CSG.
+    std::size_t max_hits = 4096;
     /// Sphere tracing's hit tolerance before refinement.
     double sphere_epsilon = 1e-6;
     /// Samples of the span used by regula falsi and bisection to find brackets.

@@ -12,7 +12,7 @@ double far_end(Span span) { return std::max(std::abs(span.t0), std::abs(span.t1)
 }  // namespace
 
 SphereMethod::SphereMethod(const RootFinderSettings& settings)
-    : tracer_({settings.sphere_epsilon, 16, settings.max_segments}) {}
+    : tracer_({settings.sphere_epsilon, 16, settings.max_segments}), max_hits_(settings.max_hits) {}
 
 Crossing SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCounters& counters) {
     const std::uint64_t nans = counters.nan_evaluations;
@@ -50,6 +50,11 @@ HitStatus SphereMethod::all_hits(RayFunction& h, Span span, std::vector<double>&
         const std::optional<double> root = next.t;
         if (!root) break;
         hits.push_back(*root);
+        if (hits.size() - before > max_hits_) {
+            hits.pop_back();
+            gave_up = true;
+            break;
+        }
         // Resume just past the root, on whichever side the ray is there: a
         // chord or a wall thinner than 2ε leaves it where it was.
         t = std::max(*root, t) + 2.0 * tracer_.step_epsilon(h, far_end(span));

@@ -22,6 +22,7 @@ private:
     Crossing crossing(RayFunction& h, Span span, double side, TraceCounters& counters);
 
     SphereTracer tracer_;
+    std::size_t max_hits_;
 };
 
 }  // namespace zeroset
