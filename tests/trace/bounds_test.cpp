@@ -61,6 +61,29 @@ TEST(Bounds, SphereClip) {
     EXPECT_FALSE(b.clip({{0, 0, 0}, {0, 0, 1}}, 7.5, 9.0).has_value());
 }
 
+// Squares of radii and offsets past 10¹⁵⁴ overflow, and below 10⁻¹⁶² vanish:
+// the clip works in units where neither happens (a soak run found the span
+// of a 10³⁰⁰ sphere was [−∞, NaN], and every ray's point NaN).
+TEST(Bounds, SphereClipAtEveryScale) {
+    const auto huge = Bounds::make_sphere({0, 0, 0}, 1e300).clip({{0, 1, -4}, {0, 0, 1}}, 0.0, INFINITY);
+    ASSERT_TRUE(huge.has_value());
+    EXPECT_EQ(huge->t0, 0.0);
+    EXPECT_NEAR(huge->t1 / 1e300, 1.0, 1e-15);
+    const auto tiny = Bounds::make_sphere({0, 0, 0}, 1e-200).clip({{-3e-200, 0, 0}, {1, 0, 0}}, 0.0, INFINITY);
+    ASSERT_TRUE(tiny.has_value());
+    EXPECT_NEAR(tiny->t0 / 2e-200, 1.0, 1e-15);
+    EXPECT_NEAR(tiny->t1 / 4e-200, 1.0, 1e-15);
+    const Bounds unit = Bounds::make_sphere({0, 0, 0}, 1.0);
+    const auto slow = unit.clip({{0, 0, -3}, {0, 0, 1e-300}}, 0.0, INFINITY);
+    ASSERT_TRUE(slow.has_value());
+    EXPECT_NEAR(slow->t0 / 2e300, 1.0, 1e-15);
+    EXPECT_NEAR(slow->t1 / 4e300, 1.0, 1e-15);
+    const auto fast = unit.clip({{0, 0, -3}, {0, 0, 1e300}}, 0.0, INFINITY);
+    ASSERT_TRUE(fast.has_value());
+    EXPECT_NEAR(fast->t0 / 2e-300, 1.0, 1e-15);
+    EXPECT_FALSE(unit.clip({{0, 2, -3}, {0, 0, 1e-300}}, 0.0, INFINITY).has_value());
+}
+
 TEST(Bounds, SphereClipAgreesWithPointSamples) {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(-4.0, 4.0);

@@ -37,7 +37,7 @@ std::string nan_message(const TraceScratch::NanRecord& nan) {
     message.precision(6);
     message << "the surface of object '" << nan.leaf->name() << "' evaluates to NaN at (" << nan.point.x << ", "
             << nan.point.y << ", " << nan.point.z
-            << ") (in the object's own coordinates, before its transforms) — a function outside its domain there (sqrt or log of a negative number, 0/0, …); "
+            << ") (in the object's own coordinates, before its transforms) — a function outside its domain there (sqrt or log of a negative number, 0/0, ∞ − ∞ after an overflow, …); "
                "fix the expression or tighten the bounds";
     return message.str();
 }

@@ -4,6 +4,7 @@
 // none (Kind::None): no method could search an infinite span.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -51,15 +52,24 @@ struct Bounds {
     [[nodiscard]] std::optional<Span> clip(const Ray& ray, double t_min, double t_max) const {
         if (kind == Kind::None) return Span{t_min, t_max};
         if (kind == Kind::Box) return box.clip(ray, t_min, t_max);
-        // |o + t·d − c|² = r²  →  a t² + 2 b t + c = 0
-        const Vec3d oc = ray.origin - center;
-        const double a = dot(ray.dir, ray.dir), b = dot(oc, ray.dir), c = dot(oc, oc) - radius * radius;
+        // |o + t·d − c|² = r²  →  a t² + 2 b t + c = 0, with lengths in units
+        // of k = max(r, |o − c|) and d in units of its largest component m,
+        // so that no square overflows or underflows (r = 10³⁰⁰ is valid).
+        const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
+        const Vec3d offset = ray.origin - center;
+        const double k = std::max(radius, largest(offset)), m = largest(ray.dir);
+        if (!(m > 0.0) || !(k > 0.0)) return std::nullopt;
+        const Vec3d oc = offset / k, d = ray.dir / m;
+        const double r = radius / k;
+        const double a = dot(d, d), b = dot(oc, d), c = dot(oc, oc) - r * r;
         const double disc = b * b - a * c;
-        if (disc < 0.0 || a == 0.0) return std::nullopt;
+        if (disc < 0.0) return std::nullopt;
         const double s = std::sqrt(disc);
-        // Numerically stable pair of roots.
+        // Numerically stable pair of roots, in t = t' · k / m.
         const double q = b >= 0.0 ? -(b + s) : -(b - s);
-        double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
+        const double unit = k / m;
+        double t0 = q / a * unit, t1 = (q != 0.0 ? c / q : q / a) * unit;
+        if (std::isnan(t0) || std::isnan(t1)) return std::nullopt;  // 0 · ∞: a tangent ray with a tiny direction
         if (t0 > t1) std::swap(t0, t1);
         t0 = std::max(t0, t_min);
         t1 = std::min(t1, t_max);
