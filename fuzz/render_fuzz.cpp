@@ -17,6 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         settings.width = 8;
         settings.height = 6;
         settings.threads = 1;
+        settings.max_evaluations = 200'000;  // a costly scene stops in milliseconds, with a RenderError
         (void)render(scene, settings);
     } catch (const SceneError&) {
     } catch (const RenderError&) {

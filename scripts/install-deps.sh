@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages zeroset needs to build, test and benchmark.
-# Idempotent: when everything is present it only checks and returns at once.
+# With --fuzz it adds clang and its libFuzzer and sanitizer runtimes
+# (scripts/fuzz.sh). Idempotent: when everything is present it only checks
+# and returns at once.
 set -euo pipefail
 
 packages=(
@@ -10,6 +12,9 @@ packages=(
   libmpfi-dev libmpfr-dev libgmp-dev  # high-precision oracles for the tests
   libbenchmark-dev                    # benchmarks
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang libclang-rt-14-dev)   # libFuzzer, ASan, UBSan
+fi
 
 missing=()
 for p in "${packages[@]}"; do
