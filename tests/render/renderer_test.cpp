@@ -223,6 +223,32 @@ TEST(Renderer, GuaranteedMethodsHitTheSamePixels) {
 namespace zeroset {
 namespace {
 
+// Bounds a double holds, moved by a transform past what it holds, are an
+// error naming the node — not spans running to ∞ and NaN points.
+TEST(Renderer, TransformedBoundsMustStayWithinDoublePrecision) {
+    const auto scene_with_scale = [](double factor) {
+        Scene scene;
+        Object o;
+        o.surface = sin(var_x()) + sin(var_y()) + sin(var_z());  // everywhere: the bounds stay as given
+        o.bounds = Bounds::make_box({{-1e300, -1e300, -1e300}, {1e300, 1e300, 1e300}});
+        auto node = std::make_shared<SceneNode>();
+        node->kind = SceneNode::Kind::Object;
+        node->name = "huge";
+        node->object = o;
+        node->transform = Mat4::scale({factor, factor, factor});
+        scene.nodes.push_back(node);
+        return scene;
+    };
+    EXPECT_NO_THROW(render(scene_with_scale(10.0), small()));
+    try {
+        render(scene_with_scale(1e10), small());
+        FAIL() << "expected a RenderError";
+    } catch (const RenderError& e) {
+        EXPECT_EQ(std::string(e.what()), "object 'huge': its transforms move its bounds past what a double can hold (the "
+                                         "diagonal of their box overflows); keep them within about ±5e307");
+    }
+}
+
 TEST(Renderer, OnlyAPlaneMayGoWithoutBounds) {
     Scene scene;
     Object o;

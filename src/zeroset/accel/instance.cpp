@@ -1,6 +1,7 @@
 // Rays in, hits out, through one affine map.
 #include "zeroset/accel/instance.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace zeroset {
@@ -11,6 +12,9 @@ Instance::Instance(std::shared_ptr<const Primitive> child, const Mat4& to_parent
     if (!inverse) throw std::invalid_argument("a transform must be invertible (a scale of 0 flattens the object)");
     to_child_ = *inverse;
     box_ = to_parent_.transform_box(child_->bounds());
+    if (std::isfinite(child_->bounds().diagonal()) && !std::isfinite(box_.diagonal()))
+        throw std::invalid_argument("its transforms move its bounds past what a double can hold (the diagonal "
+                                    "of their box overflows); keep them within about ±5e307");
 }
 
 Ray Instance::to_child(const Ray& ray) const {

@@ -153,13 +153,23 @@ Mat4 Mat4::rotate_xyz_degrees(const Vec3d& angles) {
            rotate_degrees({1, 0, 0}, angles.x);
 }
 
+bool Mat4::is_finite() const {
+    for (const auto& row : m)
+        for (const double x : row)
+            if (!std::isfinite(x)) return false;
+    return true;
+}
+
 double Mat4::squareness() const {
-    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    double columns = 1.0;
-    for (int j = 0; j < 3; ++j) columns *= std::hypot(m[0][j], m[1][j], m[2][j]);
-    return columns > 0.0 ? std::abs(det) / columns : 0.0;
+    // The determinant of the columns made unit length: no product of
+    // entries overflows or underflows, however large or small the map.
+    std::array<Vec3d, 3> c;
+    for (std::size_t j = 0; j < 3; ++j) {
+        const double length = std::hypot(m[0][j], m[1][j], m[2][j]);
+        if (!(length > 0.0)) return 0.0;
+        c[j] = Vec3d{m[0][j], m[1][j], m[2][j]} / length;
+    }
+    return std::abs(dot(c[0], cross(c[1], c[2])));
 }
 
 double Mat4::max_stretch() const {

@@ -44,6 +44,8 @@ struct Mat4 {
     /// may stretch a length, to within a factor of √3.
     [[nodiscard]] double max_stretch() const;
     [[nodiscard]] bool is_identity() const { return *this == identity(); }
+    /// Whether every entry is a finite number.
+    [[nodiscard]] bool is_finite() const;
     /// |det A| over the product of A's column lengths, for the linear part
     /// A: 1 for a rotation or any scale, 0 for a map that flattens space —
     /// how far from singular the map is, whatever its size.

@@ -49,10 +49,12 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
 
     std::shared_ptr<const Primitive> primitive;
     MaterialId around = material_id(node->material);  // what an instance around the primitive gives
+    std::string label = node->name.empty() ? "a group" : "'" + node->name + "'";  // for messages
     switch (node->kind) {
         case SceneNode::Kind::Object: {
             const Object& o = node->object;
             const std::string name = node->name.empty() ? "#" + std::to_string(leaves_.size() + 1) : node->name;
+            label = "object '" + name + "'";
             LeafDescription d;
             d.name = name;
             d.surface = o.surface;
@@ -96,7 +98,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
         try {
             primitive = std::make_shared<Instance>(std::move(primitive), node->transform, around);
         } catch (const std::invalid_argument& e) {
-            throw RenderError(e.what());
+            throw RenderError(label + ": " + e.what());
         }
     }
     prepared_.emplace(node.get(), primitive);

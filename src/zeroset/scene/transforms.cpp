@@ -24,11 +24,16 @@ void SceneParser::add_transform(const Token& keyword, SceneNode& node) {
     // Applied after the node's earlier transforms; each one, and so what
     // they make together, must be invertible.
     const Mat4 m = read_transform(keyword);
+    const std::string what(keyword.text);
+    if (!m.is_finite()) in_->fail(keyword.where, what + ": the transform's numbers must be finite");
     for (const Mat4& check : {m, m * node.transform}) {
+        const std::optional<Mat4> inverse = check.inverse();
+        if (!check.is_finite() || (inverse && !inverse->is_finite()))
+            in_->fail(keyword.where, what + ": the transform or its inverse has entries too large for double "
+                                            "precision (keep scale factors between about 1e-300 and 1e300)");
         const double squareness = check.squareness();
-        if (!(squareness > least_squareness) || !std::isfinite(squareness))
-            in_->fail(keyword.where, std::string(keyword.text) +
-                                         ": the transform is singular or nearly so (|det| / column lengths = " +
+        if (!inverse || !(squareness > least_squareness) || !std::isfinite(squareness))
+            in_->fail(keyword.where, what + ": the transform is singular or nearly so (|det| / column lengths = " +
                                          format_number(squareness) + "); it would flatten the object");
     }
     node.transform = m * node.transform;
