@@ -44,6 +44,28 @@ TEST(WorkBounds, EverySubdividingMethodGivesUpPastMaxSegments) {
     }
 }
 
+// The renderer's budget reaches into a query: past the counters' limit the
+// next segment gives up.
+TEST(WorkBounds, EverySubdividingMethodGivesUpPastTheEvaluationLimit) {
+    const Tape tape(square(var_x()) + square(var_y()) + square(var_z()) - 1.0, SlotLayout::OnePerValue);
+    const Bounds bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
+    const Ray ray{{-3, 0.999, 0}, {1, 0, 0}};
+    const Span span = *bounds.clip(ray, 0.0, INFINITY);
+    for (const Method method : {Method::Interval, Method::Lg, Method::Sphere}) {
+        const auto run = [&](std::uint64_t limit, TraceCounters& counters) {
+            RayFunction h(tape);
+            h.set_ray(ray);
+            counters.evaluation_limit = limit;
+            return make_root_finder(method, tape, settings_for_scale(bounds.box.diagonal()))->first_hit(h, span, counters);
+        };
+        TraceCounters free, limited;
+        EXPECT_EQ(run(std::numeric_limits<std::uint64_t>::max(), free).status, HitStatus::Ok) << method_name(method);
+        ASSERT_GT(free.evaluations(), 20U) << method_name(method);
+        EXPECT_EQ(run(10, limited).status, HitStatus::Failed) << method_name(method);
+        EXPECT_LT(limited.evaluations(), 30U) << method_name(method) << ": one segment past the limit at most";
+    }
+}
+
 TEST(WorkBounds, AllHitsGivesUpPastMaxHits) {
     const Tape tape(sin(var_x()), SlotLayout::OnePerValue);
     const Bounds bounds = Bounds::make_box({{-100, -1, -1}, {100, 1, 1}});

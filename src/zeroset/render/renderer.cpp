@@ -170,6 +170,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
 
     const auto worker = [&](ThreadTotals& mine) {
         SceneTracer tracer(prepared);
+        tracer.counters().evaluation_limit = signal.budget;  // this thread alone past it: its queries fail fast
         for (std::size_t i = next_tile++; i < tiles.size(); i = next_tile++) {
             render_tile(tiles[i], scene, camera, settings.samples_per_pixel, tracer, result.image, mine, signal);
             if (settings.on_progress) {

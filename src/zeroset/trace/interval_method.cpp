@@ -25,7 +25,8 @@ HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& coun
     segments.push(span.t0, span.t1, 0);
     const std::uint64_t nans = counters.nan_evaluations;
     for (long visited = 0; !segments.empty(); ++visited) {
-        if (visited == settings_.max_segments || counters.nan_evaluations != nans) return HitStatus::Failed;
+        if (visited == settings_.max_segments || counters.nan_evaluations != nans || counters.over_limit())
+            return HitStatus::Failed;
         const Segment s = segments.pop();
         const Jet<Interval> e = h.enclose(s.a, s.b, counters);
         if (settings_.log) settings_.log->interval_boxes.push_back({s.a, s.b, e.v.lo, e.v.hi});

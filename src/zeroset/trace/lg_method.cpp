@@ -23,7 +23,8 @@ HitStatus LgMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, 
     segments.push(span.t0, span.t1, 0);
     const std::uint64_t nans = counters.nan_evaluations;
     for (long visited = 0; !segments.empty(); ++visited) {
-        if (visited == settings_.max_segments || counters.nan_evaluations != nans) return HitStatus::Failed;
+        if (visited == settings_.max_segments || counters.nan_evaluations != nans || counters.over_limit())
+            return HitStatus::Failed;
         const Segment s = segments.pop();
         const double tm = 0.5 * (s.a + s.b);                      // Fig. 11, step 1
         const double r = std::max(tm - s.a, s.b - tm);             // exact half-width bound

@@ -20,7 +20,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
     for (long visited = 0; !segments.empty(); ++visited) {
-        if (visited == settings_.max_segments) return {std::nullopt, true};
+        if (visited == settings_.max_segments || counters.over_limit()) return {std::nullopt, true};
         const Segment segment = segments.pop();
         const auto [a, b, depth] = segment;
         const double eps = step_epsilon(h, std::max(std::abs(a), std::abs(b)));

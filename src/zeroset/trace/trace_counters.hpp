@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
 namespace zeroset {
 
@@ -12,10 +13,15 @@ struct TraceCounters {
     std::uint64_t gradient_evaluations = 0;  // f and ∇f over a box (for a Lipschitz bound)
     std::uint64_t nan_evaluations = 0;       // point evaluations that gave NaN
     std::uint64_t failed_queries = 0;        // ray queries a method gave up on (a budget spent), answered "no hit"
+    /// Not a count: once evaluations() passes it, the subdividing methods
+    /// give up (Failed) at their next segment. The renderer sets its budget
+    /// here, so that one query cannot run far past it.
+    std::uint64_t evaluation_limit = std::numeric_limits<std::uint64_t>::max();
 
     [[nodiscard]] std::uint64_t evaluations() const {
         return point_evaluations + interval_evaluations + gradient_evaluations;
     }
+    [[nodiscard]] bool over_limit() const { return evaluations() > evaluation_limit; }
 
     TraceCounters& operator+=(const TraceCounters& o) {
         point_evaluations += o.point_evaluations;
