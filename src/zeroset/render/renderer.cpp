@@ -53,12 +53,13 @@ struct StopSignal {
     std::atomic<bool> over_budget{false};
     std::atomic<bool> stop{false};
 
-    /// Adds the thread's evaluations since its last report; checked after
-    /// every pixel, so a render overruns its budget by at most one pixel
-    /// per thread.
+    /// Adds the thread's evaluations since its last report, after every
+    /// pixel. (Within a pixel, the tracer's own evaluation_limit stops a
+    /// thread that alone passes the budget.)
     void report(SceneTracer& tracer, ThreadTotals& totals) {
         const std::uint64_t now = tracer.counters().evaluations();
-        const std::uint64_t total = spent.fetch_add(now - totals.evaluations_counted) + (now - totals.evaluations_counted);
+        const std::uint64_t since = now - totals.evaluations_counted;
+        const std::uint64_t total = spent.fetch_add(since) + since;
         totals.evaluations_counted = now;
         if (total > budget) over_budget = true;
         if (total > budget || tracer.first_nan()) stop = true;
