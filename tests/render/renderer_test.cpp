@@ -3,11 +3,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "zeroset/render/renderer.hpp"
 
 namespace zeroset {
 namespace {
+
+/// The message of the RenderError the render throws, or "" when it renders.
+std::string render_error(const Scene& scene, const RenderSettings& settings) {
+    try {
+        render(scene, settings);
+    } catch (const RenderError& e) {
+        return e.what();
+    }
+    return "";
+}
 
 Expr sphere(const Vec3d& c, double r) {
     return square(var_x() - c.x) + square(var_y() - c.y) + square(var_z() - c.z) - r * r;
@@ -143,13 +154,9 @@ TEST(Renderer, NanSurfaceIsAnErrorNamingTheObject) {
     o.surface = sqrt(var_x()) + square(var_y()) + square(var_z()) - 1.0;  // NaN for x < 0
     o.bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
     scene.nodes.push_back(make_object_node(o, "bad"));
-    try {
-        render(scene, small());
-        FAIL() << "expected a RenderError";
-    } catch (const RenderError& e) {
-        EXPECT_NE(std::string(e.what()).find("'bad'"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("NaN"), std::string::npos) << e.what();
-    }
+    const std::string error = render_error(scene, small());
+    EXPECT_NE(error.find("'bad'"), std::string::npos) << error;
+    EXPECT_NE(error.find("NaN"), std::string::npos) << error;
 }
 
 TEST(Renderer, RejectsImpossibleSettings) {
@@ -196,11 +203,6 @@ TEST(Renderer, ForwardDifferenceNormalsMatchAnalyticOnes) {
     EXPECT_LT(worst, 0.01);
 }
 
-}  // namespace
-}  // namespace zeroset
-
-namespace zeroset {
-namespace {
 
 TEST(Renderer, GuaranteedMethodsHitTheSamePixels) {
     Scene scene = blinn_scene();
@@ -217,11 +219,6 @@ TEST(Renderer, GuaranteedMethodsHitTheSamePixels) {
     }
 }
 
-}  // namespace
-}  // namespace zeroset
-
-namespace zeroset {
-namespace {
 
 // Bounds a double holds, moved by a transform past what it holds, are an
 // error naming the node — not spans running to ∞ and NaN points.
@@ -240,13 +237,9 @@ TEST(Renderer, TransformedBoundsMustStayWithinDoublePrecision) {
         return scene;
     };
     EXPECT_NO_THROW(render(scene_with_scale(10.0), small()));
-    try {
-        render(scene_with_scale(1e10), small());
-        FAIL() << "expected a RenderError";
-    } catch (const RenderError& e) {
-        EXPECT_EQ(std::string(e.what()), "object 'huge': its transforms move its bounds past what a double can hold (the "
-                                         "diagonal of their box overflows); keep them within about ±5e307");
-    }
+    EXPECT_EQ(render_error(scene_with_scale(1e10), small()),
+              "object 'huge': its transforms move its bounds past what a double can hold (the diagonal of their box "
+              "overflows); keep them within about ±5e307");
 }
 
 TEST(Renderer, OnlyAPlaneMayGoWithoutBounds) {
@@ -255,20 +248,10 @@ TEST(Renderer, OnlyAPlaneMayGoWithoutBounds) {
     o.surface = square(var_x()) + square(var_y()) + square(var_z()) - 1.0;
     o.bounds = Bounds::none();
     scene.nodes.push_back(make_object_node(o, "ball"));
-    try {
-        render(scene, small());
-        FAIL() << "expected a RenderError";
-    } catch (const RenderError& e) {
-        EXPECT_EQ(std::string(e.what()), "object 'ball': an object without bounds must be a plane: its surface must be "
-                                         "of degree 1 in x, y and z (give it bounds otherwise)");
-    }
+    EXPECT_EQ(render_error(scene, small()), "object 'ball': an object without bounds must be a plane: its surface "
+                                            "must be of degree 1 in x, y and z (give it bounds otherwise)");
 }
 
-}  // namespace
-}  // namespace zeroset
-
-namespace zeroset {
-namespace {
 
 // A surface that is NaN where rays look is an error under every method —
 // the polynomial method too, whose F(t) then has NaN coefficients.
@@ -288,38 +271,21 @@ TEST(Renderer, NanSurfaceIsAnErrorUnderEveryMethod) {
             o.bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
             o.method = m;
             scene.nodes.push_back(make_object_node(o, "bad"));
-            try {
-                render(scene, small());
-                ADD_FAILURE() << "no error for " << c.f.to_string() << " with " << method_name(m);
-            } catch (const RenderError& e) {
-                EXPECT_NE(std::string(e.what()).find("NaN"), std::string::npos) << e.what();
-            }
+            const std::string error = render_error(scene, small());
+            EXPECT_NE(error.find("NaN"), std::string::npos)
+                << c.f.to_string() << " with " << method_name(m) << ": " << error;
         }
     }
 }
 
-}  // namespace
-}  // namespace zeroset
-
-namespace zeroset {
-namespace {
 
 TEST(Renderer, AColourPastTheLargestFloatIsAnError) {
     Scene scene = blinn_scene();
     scene.lights[0].color = {1e300, 1e300, 1e300};
-    try {
-        render(scene, small());
-        FAIL() << "expected a RenderError";
-    } catch (const RenderError& e) {
-        EXPECT_NE(std::string(e.what()).find("has no finite colour"), std::string::npos) << e.what();
-    }
+    const std::string error = render_error(scene, small());
+    EXPECT_NE(error.find("has no finite colour"), std::string::npos) << error;
 }
 
-}  // namespace
-}  // namespace zeroset
-
-namespace zeroset {
-namespace {
 
 TEST(Renderer, AnImageTooLargeForMemoryIsRefusedBeforeAnyAllocation) {
     RenderSettings settings;
@@ -350,11 +316,6 @@ TEST(Renderer, ALightAtTheHitPointLightsNothingThere) {
     EXPECT_NO_THROW(render(scene, small()));
 }
 
-}  // namespace
-}  // namespace zeroset
-
-namespace zeroset {
-namespace {
 
 // The render-wide evaluation budget: a render that needs exactly the budget
 // finishes; one evaluation less stops it with an error naming the option.
@@ -367,12 +328,8 @@ TEST(Renderer, TheEvaluationBudgetStopsARenderJustPastIt) {
     settings.max_evaluations = needed;
     EXPECT_EQ(render(scene, settings).stats.counters.evaluations(), needed);
     settings.max_evaluations = needed - 1;
-    try {
-        render(scene, settings);
-        FAIL() << "expected a RenderError";
-    } catch (const RenderError& e) {
-        EXPECT_NE(std::string(e.what()).find("--max-evaluations"), std::string::npos) << e.what();
-    }
+    const std::string error = render_error(scene, settings);
+    EXPECT_NE(error.find("--max-evaluations"), std::string::npos) << error;
     settings.max_evaluations = 0;
     EXPECT_THROW(render(scene, settings), RenderError);
 }
