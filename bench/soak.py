@@ -20,9 +20,9 @@ import argparse
 import collections
 import concurrent.futures
 import os
+import math
 import random
 import re
-import resource
 import shutil
 import struct
 import subprocess
@@ -179,22 +179,18 @@ def mutated_scene(rng, seeds):
 
 
 def finite_pfm(path):
-    data = path.read_bytes()
-    header = data.split(b"\n", 3)
-    if len(header) < 4 or header[0] != b"PF":
+    """Whether the PFM is whole and every pixel finite (a malformed one is a finding)."""
+    try:
+        header = path.read_bytes().split(b"\n", 3)
+        if len(header) < 4 or header[0] != b"PF":
+            return False
+        width, height = map(int, header[1].split())
+        endian = "<" if float(header[2]) < 0 else ">"
+        count = width * height * 3
+        pixels = struct.unpack(f"{endian}{count}f", header[3][:4 * count])
+    except (ValueError, struct.error):
         return False
-    width, height = map(int, header[1].split())
-    scale = float(header[2])
-    endian = "<" if scale < 0 else ">"
-    count = width * height * 3
-    pixels = struct.unpack(f"{endian}{count}f", header[3][:4 * count])
-    return all(p == p and abs(p) != float("inf") for p in pixels)
-
-
-def limit_memory(megabytes):
-    def apply():
-        resource.setrlimit(resource.RLIMIT_AS, (megabytes << 20, megabytes << 20))
-    return apply
+    return all(math.isfinite(p) for p in pixels)
 
 
 def run_one(binary, index, text, seconds, megabytes, findings, keep):
@@ -204,10 +200,11 @@ def run_one(binary, index, text, seconds, megabytes, findings, keep):
         scene.write_bytes(text.encode("utf-8", errors="replace"))
         command = [binary, "render", str(scene), "-o", str(image), "--width", str(WIDTH),
                    "--height", str(HEIGHT), "--threads", "1", "--quiet"]
+        if megabytes > 0:  # prlimit, not preexec_fn: the runs are started from threads
+            command = ["prlimit", f"--as={megabytes << 20}", "--"] + command
         started = time.monotonic()
         try:
-            done = subprocess.run(command, capture_output=True, timeout=seconds,
-                                  preexec_fn=limit_memory(megabytes))
+            done = subprocess.run(command, capture_output=True, timeout=seconds)
             code, stderr = done.returncode, done.stderr.decode("utf-8", errors="replace")
         except subprocess.TimeoutExpired:
             code, stderr = None, ""
@@ -240,7 +237,8 @@ def main():
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--seconds", type=float, default=60, help="time cap per render")
-    parser.add_argument("--memory-mb", type=int, default=4096, help="address-space cap per render")
+    parser.add_argument("--memory-mb", type=int, default=4096,
+                        help="address-space cap per render; 0 for none (needed for a sanitizer build)")
     parser.add_argument("--binary", default=str(ROOT / "build" / "zeroset"))
     parser.add_argument("--findings", default=str(ROOT / "build" / "soak-findings"))
     parser.add_argument("--keep", help="also keep the scenes whose messages match this regular expression")

@@ -13,7 +13,7 @@ packages=(
   libbenchmark-dev                    # benchmarks
 )
 if [ "${1:-}" = "--fuzz" ]; then
-  packages+=(clang libclang-rt-14-dev)   # libFuzzer, ASan, UBSan
+  packages+=(clang libclang-rt-dev)      # libFuzzer, ASan, UBSan
 fi
 
 missing=()

@@ -132,7 +132,7 @@ TEST_F(Cli, NanProducingFunctionIsAnErrorAndWritesNothing) {
 TEST_F(Cli, ARenderPastItsEvaluationBudgetIsAnErrorAndWritesNothing) {
     const Outcome spent = run("render -o out.png --width 16 --height 12 --max-evaluations 100");
     EXPECT_EQ(spent.status, 1);
-    EXPECT_NE(spent.err.find("more than 100 evaluations"), std::string::npos) << spent.err;
+    EXPECT_NE(spent.err.find("its budget of 100 evaluations"), std::string::npos) << spent.err;
     const Outcome malformed = run("render -o out.png --width 16 --height 12 --max-evaluations lots");
     EXPECT_EQ(malformed.status, 2);
     EXPECT_NE(malformed.err.find("--max-evaluations"), std::string::npos) << malformed.err;

@@ -237,6 +237,18 @@ TEST(Renderer, TransformedBoundsMustStayWithinDoublePrecision) {
         return scene;
     };
     EXPECT_NO_THROW(render(scene_with_scale(10.0), small()));
+    // The most stretched map the parser accepts still renders a polynomial
+    // surface under auto (the polynomial method: powers of the moved direction).
+    Scene flat;
+    Object ball;
+    ball.surface = square(var_x()) + square(var_y()) + square(var_z()) - 1.0;
+    ball.bounds = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+    auto squashed = std::make_shared<SceneNode>();
+    squashed->kind = SceneNode::Kind::Object;
+    squashed->object = ball;
+    squashed->transform = Mat4::scale({1e-100, 1, 1e100});
+    flat.nodes.push_back(squashed);
+    EXPECT_EQ(render_error(flat, small()), "");
     EXPECT_EQ(render_error(scene_with_scale(1e10), small()),
               "object 'huge': its transforms move its bounds past what a double can hold (the diagonal of their box "
               "overflows); keep them within about ±5e307");
@@ -330,8 +342,15 @@ TEST(Renderer, TheEvaluationBudgetStopsARenderJustPastIt) {
     settings.max_evaluations = needed - 1;
     const std::string error = render_error(scene, settings);
     EXPECT_NE(error.find("--max-evaluations"), std::string::npos) << error;
+    EXPECT_EQ(error.find("per camera ray"), std::string::npos) << "a budget given is not the default: " << error;
     settings.max_evaluations = 0;
     EXPECT_THROW(render(scene, settings), RenderError);
+    // With two threads each spends its share of what is left.
+    settings.threads = 2;
+    settings.max_evaluations = needed / 4;
+    EXPECT_NE(render_error(scene, settings).find("--max-evaluations"), std::string::npos);
+    settings.max_evaluations = needed * 4;
+    EXPECT_EQ(render_error(scene, settings), "");
 }
 
 TEST(Renderer, TheDefaultEvaluationBudgetGrowsWithTheRays) {

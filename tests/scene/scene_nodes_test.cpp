@@ -143,13 +143,19 @@ TEST(SceneNodes, Errors) {
     // A soak run found maps whose inverse overflows (a scale of 1e-320 is
     // "square", but moves rays to ∞) and NaN factors.
     EXPECT_EQ(error_of(std::string(unit_ball) + " scale (1e-320, 1, 1) }"),
-              "scene.zs:1:76: scale: the transform or its inverse has entries too large for double precision (keep "
-              "scale factors between about 1e-300 and 1e300)");
-    EXPECT_EQ(error_of(std::string(unit_ball) + " scale 1e200 scale 1e200 }"),
-              "scene.zs:1:88: scale: the transform or its inverse has entries too large for double precision (keep "
-              "scale factors between about 1e-300 and 1e300)");
+              "scene.zs:1:76: scale: the transform or its inverse stretches lengths by more than 1e100 (keep "
+              "scale factors between 1e-100 and 1e100)");
+    EXPECT_EQ(error_of(std::string(unit_ball) + " scale 1e60 scale 1e60 }"),
+              "scene.zs:1:87: scale: the transform or its inverse stretches lengths by more than 1e100 (keep "
+              "scale factors between 1e-100 and 1e100)");
     EXPECT_EQ(error_of(std::string(unit_ball) + " scale 0/0 }"), "scene.zs:1:82: the scale must be finite, but it is nan");
-    EXPECT_NO_THROW(parse(std::string(unit_ball) + " scale (1e-300, 1, 1e300) }"));
+    EXPECT_EQ(error_of(std::string(unit_ball) + " scale (1e-300, 1, 1) }"),
+              "scene.zs:1:76: scale: the transform or its inverse stretches lengths by more than 1e100 (keep "
+              "scale factors between 1e-100 and 1e100)");
+    EXPECT_NO_THROW(parse(std::string(unit_ball) + " scale (1e-100, 1, 1e100) }"));
+    // A translation, however far, is not singular.
+    EXPECT_NO_THROW(parse(std::string(unit_ball) + " translate (1e13, 0, 0) }"));
+    EXPECT_NO_THROW(parse(std::string(unit_ball) + " scale 1e-13 translate (1, 0, 0) }"));
     EXPECT_EQ(error_of(std::string(unit_ball) + " matrix (1, 0, 0) }"),
               "scene.zs:1:91: expected ',' (a matrix has 12 numbers: 3 rows of A, each followed by its t) but "
               "found ')'");

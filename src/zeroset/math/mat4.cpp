@@ -81,12 +81,15 @@ Mat4 Mat4::transpose() const {
 std::optional<Mat4> Mat4::inverse() const {
     Mat4 a = *this;
     Mat4 inv = identity();
-    // Each row's largest entry. Rows that are dependent up to rounding leave a
-    // pivot of rounding-error size *relative to its row*, not an exact 0, so
-    // singularity is judged against the row's scale.
+    // Each row's largest entry of the linear part (a translation, however
+    // large, does not make a map singular). Rows that are dependent up to
+    // rounding leave a pivot of rounding-error size *relative to its row*,
+    // not an exact 0, so singularity is judged against the row's scale.
     std::array<double, 4> row_scale{};
-    for (int row = 0; row < 4; ++row)
-        for (const double v : a.m[row]) row_scale[row] = std::max(row_scale[row], std::abs(v));
+    for (int row = 0; row < 4; ++row) {
+        for (int col = 0; col < 3; ++col) row_scale[row] = std::max(row_scale[row], std::abs(a.m[row][col]));
+        if (row_scale[row] == 0.0) row_scale[row] = std::abs(a.m[row][3]);  // the affine row (0, 0, 0, 1)
+    }
     for (int col = 0; col < 4; ++col) {
         int pivot = col;
         for (int row = col + 1; row < 4; ++row)

@@ -49,20 +49,30 @@ struct ThreadTotals {
 /// the image is not worth tracing.
 struct StopSignal {
     std::uint64_t budget = 0;
+    std::uint64_t threads = 1;
     std::atomic<std::uint64_t> spent{0};
     std::atomic<bool> over_budget{false};
     std::atomic<bool> stop{false};
 
+    /// A thread's allowance until its next report: its share of what is
+    /// left, so that the threads together stay within the budget while
+    /// their queries run (TraceCounters::evaluation_limit).
+    void allow(SceneTracer& tracer, std::uint64_t total) const {
+        const std::uint64_t left = budget - std::min(total, budget);
+        tracer.counters().evaluation_limit = tracer.counters().evaluations() + left / threads;
+    }
+
     /// Adds the thread's evaluations since its last report, after every
-    /// pixel. (Within a pixel, the tracer's own evaluation_limit stops a
-    /// thread that alone passes the budget.)
+    /// pixel. A thread past its allowance has had queries fail, so the
+    /// render is over budget even if the others left some unspent.
     void report(SceneTracer& tracer, ThreadTotals& totals) {
         const std::uint64_t now = tracer.counters().evaluations();
         const std::uint64_t since = now - totals.evaluations_counted;
         const std::uint64_t total = spent.fetch_add(since) + since;
         totals.evaluations_counted = now;
-        if (total > budget) over_budget = true;
-        if (total > budget || tracer.first_nan()) stop = true;
+        if (total > budget || tracer.counters().over_limit()) over_budget = true;
+        if (over_budget || tracer.first_nan()) stop = true;
+        allow(tracer, total);
     }
 };
 
@@ -102,12 +112,12 @@ void check_camera(const Camera& camera) {
         throw RenderError("the camera's `up` is parallel to its view direction");
 }
 
-std::string budget_message(std::uint64_t budget) {
+std::string budget_message(std::uint64_t budget, bool by_default) {
     std::ostringstream message;
-    message << "the render was stopped when it had spent more than " << budget
-            << " evaluations of the surfaces (the budget: " << evaluations_per_camera_ray
-            << " per camera ray, at least " << least_evaluation_budget
-            << "): an object is far too costly for its method here — a surface with detail finer than a pixel "
+    message << "the render was stopped when it had spent its budget of " << budget << " evaluations of the surfaces";
+    if (by_default)
+        message << " (" << evaluations_per_camera_ray << " per camera ray, at least " << least_evaluation_budget << ")";
+    message << ": an object is far too costly for its method here — a surface with detail finer than a pixel "
                "everywhere, say, or bounds far larger than the surface. Try another method or tighter bounds, or "
                "raise the budget (--max-evaluations)";
     return message.str();
@@ -145,7 +155,7 @@ void validate(const RenderSettings& s) {
     require_image_fits(s.width, s.height);
     require_in_range(s.samples_per_pixel, 1, max_samples_per_pixel, "samples per pixel");
     require_in_range(s.threads, 0, 4096, "threads");
-    if (s.max_evaluations && *s.max_evaluations == 0) throw RenderError("the evaluation budget must be at least 1");
+    if (s.max_evaluations && *s.max_evaluations == 0) throw RenderError("the evaluation budget (--max-evaluations) must be at least 1");
 }
 
 RenderResult render(const Scene& scene, const RenderSettings& settings) {
@@ -168,10 +178,11 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     int tiles_done = 0;
     StopSignal signal;
     signal.budget = settings.max_evaluations.value_or(default_evaluation_budget(settings));
+    signal.threads = static_cast<std::uint64_t>(thread_count);
 
     const auto worker = [&](ThreadTotals& mine) {
         SceneTracer tracer(prepared);
-        tracer.counters().evaluation_limit = signal.budget;  // this thread alone past it: its queries fail fast
+        signal.allow(tracer, signal.spent);
         for (std::size_t i = next_tile++; i < tiles.size(); i = next_tile++) {
             render_tile(tiles[i], scene, camera, settings.samples_per_pixel, tracer, result.image, mine, signal);
             if (settings.on_progress) {
@@ -196,7 +207,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
         stats.counters += t.stats.counters;
         if (t.first_nan) throw RenderError(nan_message(*t.first_nan));
     }
-    if (signal.over_budget) throw RenderError(budget_message(signal.budget));
+    if (signal.over_budget) throw RenderError(budget_message(signal.budget, !settings.max_evaluations));
     for (const ThreadTotals& t : totals) {
         if (!t.non_finite_pixel) continue;
         const auto [px, py] = *t.non_finite_pixel;

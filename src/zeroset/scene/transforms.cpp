@@ -17,6 +17,9 @@ constexpr std::array<std::string_view, 6> shear_keys{"xy", "xz", "yx", "yz", "zx
 /// A map this close to flattening space (Mat4::squareness) is refused: its
 /// inverse would lose most of the digits of every moved ray.
 constexpr double least_squareness = 1e-9;
+/// The most a map or its inverse may stretch a length: beyond it, the
+/// powers of a moved ray's direction in a ray polynomial overflow.
+constexpr double most_stretch = 1e100;
 
 }  // namespace
 
@@ -28,9 +31,10 @@ void SceneParser::add_transform(const Token& keyword, SceneNode& node) {
     if (!m.is_finite()) in_->fail(keyword.where, what + ": the transform's numbers must be finite");
     for (const Mat4& check : {m, m * node.transform}) {
         const std::optional<Mat4> inverse = check.inverse();
-        if (!check.is_finite() || (inverse && !inverse->is_finite()))
-            in_->fail(keyword.where, what + ": the transform or its inverse has entries too large for double "
-                                            "precision (keep scale factors between about 1e-300 and 1e300)");
+        const auto too_large = [](const Mat4& a) { return !a.is_finite() || !(a.max_stretch() <= most_stretch); };
+        if (too_large(check) || (inverse && too_large(*inverse)))
+            in_->fail(keyword.where, what + ": the transform or its inverse stretches lengths by more than 1e100 "
+                                            "(keep scale factors between 1e-100 and 1e100)");
         const double squareness = check.squareness();
         if (!inverse || !(squareness > least_squareness) || !std::isfinite(squareness))
             in_->fail(keyword.where, what + ": the transform is singular or nearly so (|det| / column lengths = " +

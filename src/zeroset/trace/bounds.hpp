@@ -53,22 +53,27 @@ struct Bounds {
         if (kind == Kind::None) return Span{t_min, t_max};
         if (kind == Kind::Box) return box.clip(ray, t_min, t_max);
         // |o + t·d − c|² = r²  →  a t² + 2 b t + c = 0, with lengths in units
-        // of k = max(r, |o − c|) and d in units of its largest component m,
-        // so that no square overflows or underflows (r = 10³⁰⁰ is valid).
+        // of the power of two 2^ek nearest below max(r, |o − c|) and d in
+        // units of 2^em below its largest component, so that no square
+        // overflows or underflows (r = 10³⁰⁰ is valid) and, the scaling being
+        // exact, ordinary spheres clip exactly as without it.
         const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
         const Vec3d offset = ray.origin - center;
         const double k = std::max(radius, largest(offset)), m = largest(ray.dir);
-        if (!(m > 0.0) || !(k > 0.0)) return std::nullopt;
-        const Vec3d oc = offset / k, d = ray.dir / m;
-        const double r = radius / k;
+        if (!(m > 0.0) || !(k > 0.0) || !std::isfinite(k) || !std::isfinite(m)) return std::nullopt;
+        const int ek = std::ilogb(k), em = std::ilogb(m);
+        const auto scaled = [](const Vec3d& v, int e) {
+            return Vec3d{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+        };
+        const Vec3d oc = scaled(offset, ek), d = scaled(ray.dir, em);
+        const double r = std::ldexp(radius, -ek);
         const double a = dot(d, d), b = dot(oc, d), c = dot(oc, oc) - r * r;
         const double disc = b * b - a * c;
         if (disc < 0.0) return std::nullopt;
         const double s = std::sqrt(disc);
         // Numerically stable pair of roots, in t = t' · k / m.
         const double q = b >= 0.0 ? -(b + s) : -(b - s);
-        const double unit = k / m;
-        double t0 = q / a * unit, t1 = (q != 0.0 ? c / q : q / a) * unit;
+        double t0 = std::ldexp(q / a, ek - em), t1 = std::ldexp(q != 0.0 ? c / q : q / a, ek - em);
         if (std::isnan(t0) || std::isnan(t1)) return std::nullopt;  // 0 · ∞: a tangent ray with a tiny direction
         if (t0 > t1) std::swap(t0, t1);
         t0 = std::max(t0, t_min);

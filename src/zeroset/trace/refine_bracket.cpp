@@ -2,6 +2,7 @@
 #include "zeroset/trace/refine_bracket.hpp"
 
 #include <cmath>
+#include <cstdint>
 
 #include "zeroset/roots/refine.hpp"
 
@@ -31,9 +32,13 @@ bool closes_in_on_a_pole(RayFunction& h, double a, double b, TraceCounters& coun
         ((f < 0.0) == negative_lo ? lo : hi) = mid;
         ((f < 0.0) == negative_lo ? f_lo : f_hi) = f;
     }
-    // … and compare |H| there with |H| a little way off on either side.
+    // … and compare |H| there with |H| a little way off on either side. The
+    // probes may leave the span, and the object's domain: a NaN there is not
+    // the surface's, so it is not recorded.
     const double w = 16.0 * (b - a);
+    const std::uint64_t nans = counters.nan_evaluations;
     const double off = std::max(std::abs(h.value(a - w, counters)), std::abs(h.value(b + w, counters)));
+    counters.nan_evaluations = nans;
     return std::isfinite(off) && std::min(std::abs(f_lo), std::abs(f_hi)) > off;
 }
 
