@@ -4,6 +4,7 @@
 // moves narrows the slabs of the other axes, which tightens their proofs.
 #include "zeroset/trace/search_region.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -122,7 +123,16 @@ SearchRegion::SearchRegion(const Tape& tape, const Bounds& bounds) : bounds_(bou
     const Box3 box = bounds.enclosing_box();
     if (!std::isfinite(box.diagonal()))
         throw std::invalid_argument("the bounds are too large for double precision: their diagonal overflows");
-    box_ = shrink_to_surface(tape, box);
+    // A margin of 10⁻⁶ of the object's size around the shrunk box (within
+    // the given bounds): a face may have stopped right on the surface — a
+    // floor's plane — and a ray entering there would start on it or, by
+    // rounding, inside, taking the bounds' cut for the surface.
+    const Box3 shrunk = shrink_to_surface(tape, box);
+    const double margin = 1e-6 * shrunk.diagonal();
+    for (int axis = 0; axis < 3; ++axis) {
+        box_.lo[axis] = std::max(box.lo[axis], shrunk.lo[axis] - margin);
+        box_.hi[axis] = std::min(box.hi[axis], shrunk.hi[axis] + margin);
+    }
     scale_ = box_.diagonal();
 }
 
