@@ -32,7 +32,7 @@ void BM_RaySuite(benchmark::State& state, Method method) {
     for (const SuiteRay& r : suite()) {
         Prepared& p = prepared[r.surface];
         if (p.tape) continue;
-        p.tape = std::make_unique<Tape>(zeroset::test::ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
+        p.tape = std::make_unique<Tape>(zeroset::test::ray_suite_surface(r.surface).f);
         p.h = std::make_unique<RayFunction>(*p.tape);
         p.finder = make_root_finder(method, *p.tape, settings_for_scale(r.scale));
     }

@@ -113,7 +113,7 @@ int ray_command(const std::vector<std::string>& args) {
     const Object& object = placed.object();
     const RaySubject subject{default_scene_used ? "<default>" : options.positional()[0], placed.name(), newton_from};
 
-    const Tape tape(object.surface, SlotLayout::OnePerValue);
+    const Tape tape(object.surface);
     const SearchRegion region(tape, object.bounds);
     RootFinderSettings settings = settings_for_scale(region.scale());
     settings.newton_start = subject.newton_from;

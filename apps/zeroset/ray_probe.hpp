@@ -42,7 +42,7 @@ struct RayProbe {
 /// Runs every method of `methods` on the ray: a fresh RootFinder for each
 /// query, so neither query's evaluations or log include the other's. A
 /// method that throws (e.g. one not implemented yet) is reported as failed
-/// with the exception's message. `tape` must use SlotLayout::OnePerValue.
+/// with the exception's message.
 RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray, std::span<const Method> methods,
                    const RootFinderSettings& settings);
 

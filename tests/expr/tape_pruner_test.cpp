@@ -30,7 +30,7 @@ void expect_same_inside(const Tape& full, const Tape& pruned, const Box3& box, i
 }
 
 TEST(TapePruner, UnionOfDistantBallsKeepsOnlyTheNearOne) {
-    const Tape full(min(ball(-5, 1), ball(5, 1)), SlotLayout::OnePerValue);
+    const Tape full(min(ball(-5, 1), ball(5, 1)));
     TapePruner pruner(full);
     Tape pruned;
     const Box3 near_left{{-6, -1, -1}, {-4, 1, 1}};
@@ -40,11 +40,45 @@ TEST(TapePruner, UnionOfDistantBallsKeepsOnlyTheNearOne) {
     EXPECT_EQ(full.clauses().size(), 15u);
     EXPECT_EQ(pruned.clauses().size(), 8u);
     for (const Clause& c : pruned.clauses()) EXPECT_NE(c.op, Op::Min);
+    // Renumbered: x, y, z, the live constants (-5 and 1), and reused working slots.
+    EXPECT_EQ(pruned.constants().size(), 2u);
+    EXPECT_LT(pruned.slot_count(), full.slot_count());
     expect_same_inside(full, pruned, near_left);
 }
 
+TEST(TapePruner, ATapeCanPruneToAVariableOrAConstant) {
+    const Tape full(max(min(var_x(), var_y() + 10.0), Expr(-3.0)));
+    TapePruner pruner(full);
+    Tape pruned;
+    const Box3 box{{0, 0, 0}, {1, 1, 1}};  // x < y + 10, and x > -3
+    pruner.prune(full, box, pruned);
+    EXPECT_TRUE(pruned.clauses().empty());
+    EXPECT_EQ(pruned.result_slot(), Tape::slot_x);
+    expect_same_inside(full, pruned, box);
+    const Box3 far{{-9, 0, 0}, {-8, 1, 1}};  // x < -3 everywhere
+    pruner.prune(full, far, pruned);
+    EXPECT_TRUE(pruned.clauses().empty());
+    Evaluator<double> f(full);
+    f.rebind(pruned);
+    EXPECT_EQ(f(-8.5, 0.5, 0.5), -3.0);
+}
+
+TEST(TapePruner, AValueUsedAfterItsMinIsResolvedKeepsItsSlot) {
+    // a = x², m = min(a, 100) resolves to a over the box, and a is used again
+    // after m: the slot of a must survive until the last use of either.
+    const Expr a = square(var_x());
+    const Expr m = min(a, Expr(100.0));
+    const Tape full(m * var_y() + a * var_z() + m);
+    TapePruner pruner(full);
+    Tape pruned;
+    const Box3 box{{-2, -1, -1}, {2, 1, 1}};
+    pruner.prune(full, box, pruned);
+    EXPECT_LT(pruned.clauses().size(), full.clauses().size());
+    expect_same_inside(full, pruned, box);
+}
+
 TEST(TapePruner, AmbiguousBoxKeepsBothSides) {
-    const Tape full(min(ball(-1, 1), ball(1, 1)), SlotLayout::OnePerValue);
+    const Tape full(min(ball(-1, 1), ball(1, 1)));
     TapePruner pruner(full);
     Tape pruned;
     const Box3 middle{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}};
@@ -55,7 +89,7 @@ TEST(TapePruner, AmbiguousBoxKeepsBothSides) {
 
 TEST(TapePruner, PruningAPrunedTapeNarrowsFurther) {
     const Expr three = min(min(ball(-4, 1), ball(0, 1)), ball(4, 1));
-    const Tape full(three, SlotLayout::OnePerValue);
+    const Tape full(three);
     TapePruner pruner(full);
     Tape wide, narrow;
     // Over `wide` the right ball loses to the other two; over `narrow` the
@@ -72,7 +106,7 @@ TEST(TapePruner, PruningAPrunedTapeNarrowsFurther) {
 
 TEST(TapePruner, BearStaysExactAndShrinksInSmallBoxes) {
     std::ifstream in(ZEROSET_MODELS_DIR "/bear.vm");
-    const Tape full(import_vm(in), SlotLayout::OnePerValue);
+    const Tape full(import_vm(in));
     TapePruner pruner(full);
     Tape pruned;
     std::size_t total = 0;
@@ -89,6 +123,29 @@ TEST(TapePruner, BearStaysExactAndShrinksInSmallBoxes) {
     // bear is mostly smooth blends (27 of 543 clauses are min/max), so small
     // boxes drop only part of it.
     EXPECT_LT(total / static_cast<std::size_t>(boxes), full.clauses().size() * 9 / 10);
+}
+
+TEST(TapePruner, ProsperoShrinksByOrdersOfMagnitudeInSmallBoxes) {
+    std::ifstream in(ZEROSET_MODELS_DIR "/prospero.vm");
+    const Tape full(import_vm(in));
+    TapePruner pruner(full);
+    Tape wide, narrow;
+    std::size_t most_clauses = 0;
+    std::uint32_t most_slots = 0;
+    for (double x = -0.9; x < 0.9; x += 0.35) {
+        for (double y = -0.9; y < 0.9; y += 0.35) {
+            const Box3 box{{x, y, 0.0}, {x + 0.1, y + 0.1, 0.0}};
+            const Box3 small{{x, y, 0.0}, {x + 0.02, y + 0.02, 0.0}};
+            pruner.prune(full, box, wide);
+            pruner.prune(wide, small, narrow);
+            most_clauses = std::max(most_clauses, wide.clauses().size());
+            most_slots = std::max(most_slots, narrow.slot_count());
+            expect_same_inside(full, wide, box, 10);
+            expect_same_inside(full, narrow, small, 10);
+        }
+    }
+    EXPECT_LT(most_clauses, full.clauses().size() / 10);
+    EXPECT_LT(most_slots, full.slot_count() / 10);
 }
 
 }  // namespace

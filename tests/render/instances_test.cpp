@@ -24,7 +24,7 @@ TEST(Instances, AThousandBearsAreOneTape) {
     EXPECT_EQ(placed_objects(scene).size(), 1024u);
     const PreparedScene prepared(scene);
     ASSERT_EQ(prepared.leaves().size(), 1u);  // one tape for all 1024
-    const Tape bear(placed_objects(scene).front().object().surface, SlotLayout::OnePerValue);
+    const Tape bear(placed_objects(scene).front().object().surface);
     EXPECT_EQ(prepared.leaves().front()->tape().clauses().size(), bear.clauses().size());
 
     RenderSettings settings;

@@ -70,7 +70,7 @@ void expect_oracle_first_hits(Method method) {
     const Expr f = cube_minus_ball();
     const Bounds bounds = Bounds::make_box({{-1.1, -1.1, -1.1}, {1.1, 1.1, 1.1}});
     const double scale = bounds.box.diagonal();
-    const Tape tape(f, SlotLayout::OnePerValue);
+    const Tape tape(f);
     MpfiRayOracle oracle(f, scale);
     const RootFinderSettings settings = settings_for_scale(scale);
     int rays = 0, with_root = 0;

@@ -59,7 +59,7 @@ TEST(DeformationRays, SphereTracingFindsTheIntervalMethodsFirstHit) {
     const auto uniform = [&rng](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
     for (const DeformedObject& object : objects()) {
         SCOPED_TRACE(object.name);
-        const Tape tape(object.f, SlotLayout::OnePerValue);
+        const Tape tape(object.f);
         const Vec3d diagonal = object.bounds.hi - object.bounds.lo;
         const double scale = length(diagonal);
         const RootFinderSettings settings = settings_for_scale(scale);

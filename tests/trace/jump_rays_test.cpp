@@ -19,7 +19,7 @@ namespace {
 const Expr X = var_x(), Y = var_y(), Z = var_z();
 
 HitResult first_hit(Method method, const Expr& f, const Ray& ray, Span span) {
-    const Tape tape(f, SlotLayout::OnePerValue);
+    const Tape tape(f);
     RayFunction h(tape);
     h.set_ray(ray);
     TraceCounters counters;

@@ -18,7 +18,7 @@ constexpr std::array non_polynomial_methods{Method::Interval, Method::Lg,       
 
 TEST(Poles, ASignChangeAcrossAPoleIsNoHit) {
     const Expr f = -(Expr(1.0) / var_x()) - 0.5;
-    const Tape tape(f, SlotLayout::OnePerValue);
+    const Tape tape(f);
     const Ray ray{{-1, 0.1, 0.1}, {1, 0, 0}};  // the ray, through x = 0 at t = 1
     for (const Method m : non_polynomial_methods) {
         RayFunction h(tape);
@@ -35,7 +35,7 @@ TEST(Poles, RootsBesideAPoleAreFound) {
     // A unit sphere divided by 3 − x: the same surface, and a pole at x = 3.
     const Bounds box = Bounds::make_box({{-2, -2, -2}, {5, 2, 2}});
     const Expr f = (square(var_x()) + square(var_y()) + square(var_z()) - 1.0) / (3.0 - var_x());
-    const Tape tape(f, SlotLayout::OnePerValue);
+    const Tape tape(f);
     const Ray ray{{-2, 0, 0}, {1, 0, 0}};
     for (const Method m : {Method::Interval, Method::Lg, Method::Sphere}) {
         RayFunction h(tape);

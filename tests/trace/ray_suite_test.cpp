@@ -182,7 +182,7 @@ TEST_P(RaySuiteScaled, SphereTracerNeverSkipsTheFirstHit) {
     for (const SuiteRay& r : suite()) {
         auto& tape = tapes[r.surface];
         const double eps = 1e-6 * r.scale, slack = 1e-12 * r.scale;
-        if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
+        if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f);
         const SphereTracer tracer(SphereTraceSettings{.epsilon = eps});
         RayFunction h(*tape);
         h.set_ray(scaled_ray(r, s));
@@ -246,7 +246,7 @@ void expect_strict(Method method, double s) {
     std::map<std::string, StrictTally> tallies;
     for (const SuiteRay& r : suite()) {
         auto& tape = tapes[r.surface];
-        if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
+        if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f);
         RayFunction h(*tape);
         h.set_ray(scaled_ray(r, s));
         TraceCounters counters;
@@ -298,7 +298,7 @@ TEST_P(RaySuiteScaled, PolynomialMethodNeverMissesOnPolynomialSurfaces) {
     int rays = 0, unresolved = 0;
     for (const SuiteRay& r : suite()) {
         auto& tape = tapes[r.surface];
-        if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f, SlotLayout::OnePerValue);
+        if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f);
         if (!tape->is_polynomial()) continue;
         ++rays;
         const RootFinderSettings settings = settings_for_scale(r.scale);

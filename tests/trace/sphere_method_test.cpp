@@ -15,7 +15,7 @@ namespace {
 
 TEST(SphereMethod, HitsTheUnitSphereAlongALongDirection) {
     const Expr f = sqrt(square(var_x()) + square(var_y()) + square(var_z())) - 1.0;
-    const Tape tape(f, SlotLayout::OnePerValue);
+    const Tape tape(f);
     const Bounds bounds = Bounds::make_box({{-10, -10, -10}, {10, 10, 10}});
     for (const double length : {10.0, 1e-4, 1e4}) {
         const Ray ray{{-9.9, 0, 0}, {length, 0, 0}};
@@ -44,7 +44,7 @@ TEST(SphereMethod, FindsCrossingsOnSegmentsWithoutALipschitzBound) {
     const Expr x = var_x(), y = var_y(), z = var_z();
     const ExprPoint cell{mod(x, Expr(1.0)) - 0.5, y, mod(z, Expr(1.0)) - 0.5};
     const Expr f = smooth_union(sd_sphere(cell, 0.3), sd_box({x, y, z}, {3, 0.05, 3}), 0.15);
-    const Tape tape(f, SlotLayout::OnePerValue);
+    const Tape tape(f);
     const Bounds bounds = Bounds::make_box({{-3.5, -0.5, -3.5}, {3.5, 0.5, 3.5}});
     const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
     int compared = 0;
@@ -85,7 +85,7 @@ TEST(SphereMethod, AllHitsGoOnPastAShortChord) {
     // Chord 2·sqrt(1 − d²) = 1.5ε.
     const double d = std::sqrt(1.0 - square(0.75 * eps));
     const Expr f = min(square(x) + square(y) + square(z) - 1.0, square(x - 3.0) + square(y - d) + square(z) - 1.0);
-    const Tape tape(f, SlotLayout::OnePerValue);
+    const Tape tape(f);
     const Ray ray{{-1.4, d, 0}, {1, 0, 0}};
     RayFunction h(tape);
     h.set_ray(ray);

@@ -16,7 +16,7 @@ namespace {
 
 TEST(UndefinedSurface, EveryMethodFailsAtOnceWithoutHits) {
     const Expr f = sin(Expr(1.0) / Expr(0.0) * var_z()) + 0.7;
-    const Tape tape(f, SlotLayout::OnePerValue);
+    const Tape tape(f);
     const Bounds bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
     const Ray ray{{0.1, 0.2, -3}, {0, 0, 1}};
     const Span span = *bounds.clip(ray, 0.0, INFINITY);
@@ -50,7 +50,7 @@ namespace {
 TEST(UndefinedSurface, ProbesPastAPoleOnTheBoundsDoNotFailTheQuery) {
     const Expr x = var_x();
     const Expr f = Expr(1.0) / (x - 0.5) + 1e-9 * sqrt(Expr(0.5) - x) + 0.1 * var_y();
-    const Tape tape(f, SlotLayout::OnePerValue);
+    const Tape tape(f);
     const Bounds bounds = Bounds::make_box({{-1, -1, -1}, {0.5, 1, 1}});
     const Ray ray{{-0.9, 0.3, 0.1}, {1, 0, 0}};
     const Span span = *bounds.clip(ray, 0.0, INFINITY);

@@ -14,7 +14,7 @@ namespace {
 
 TEST(WorkBounds, EverySubdividingMethodGivesUpPastMaxSegments) {
     const Expr x = var_x(), y = var_y(), z = var_z();
-    const Tape tape(square(x) + square(y) + square(z) - 1.0, SlotLayout::OnePerValue);
+    const Tape tape(square(x) + square(y) + square(z) - 1.0);
     const Bounds bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
     const Ray ray{{-3, 0.999, 0}, {1, 0, 0}};  // a near graze: many segments to isolate it
     const Span span = *bounds.clip(ray, 0.0, INFINITY);
@@ -47,7 +47,7 @@ TEST(WorkBounds, EverySubdividingMethodGivesUpPastMaxSegments) {
 // The renderer's budget reaches into a query: past the counters' limit the
 // next segment gives up.
 TEST(WorkBounds, EverySubdividingMethodGivesUpPastTheEvaluationLimit) {
-    const Tape tape(square(var_x()) + square(var_y()) + square(var_z()) - 1.0, SlotLayout::OnePerValue);
+    const Tape tape(square(var_x()) + square(var_y()) + square(var_z()) - 1.0);
     const Bounds bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
     const Ray ray{{-3, 0.999, 0}, {1, 0, 0}};
     const Span span = *bounds.clip(ray, 0.0, INFINITY);
@@ -67,7 +67,7 @@ TEST(WorkBounds, EverySubdividingMethodGivesUpPastTheEvaluationLimit) {
 }
 
 TEST(WorkBounds, AllHitsGivesUpPastMaxHits) {
-    const Tape tape(sin(var_x()), SlotLayout::OnePerValue);
+    const Tape tape(sin(var_x()));
     const Bounds bounds = Bounds::make_box({{-100, -1, -1}, {100, 1, 1}});
     const Ray ray{{0, 0, 0}, {1, 0, 0}};
     const Span span{0.5, 10.5 * M_PI};  // the roots π, 2π, …, 10π

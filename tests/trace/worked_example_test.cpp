@@ -23,7 +23,7 @@ struct Subject {
 
     explicit Subject(const char* scene_file)
         : scene(load_scene(std::string(ZEROSET_SOURCE_DIR) + "/scenes/hart1993/" + scene_file)),
-          tape(placed_objects(scene).at(0).object().surface, SlotLayout::OnePerValue),
+          tape(placed_objects(scene).at(0).object().surface),
           span(*placed_objects(scene).at(0).object().bounds.clip(survey_ray, 0.0, 1e9)) {}
 
     [[nodiscard]] RootFinderSettings settings() const {

@@ -47,7 +47,7 @@ LeafScratch::LeafScratch(const ImplicitLeaf& leaf)
 ImplicitLeaf::ImplicitLeaf(std::size_t id, LeafDescription description)
     : id_(id),
       description_(std::move(description)),
-      tape_(description_.surface, SlotLayout::OnePerValue),
+      tape_(description_.surface),
       region_(tape_, description_.bounds),
       method_(resolve_method(description_.method, tape_)),
       settings_(settings_for_scale(region_.scale())) {

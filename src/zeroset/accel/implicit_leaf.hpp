@@ -88,7 +88,7 @@ private:
 
     std::size_t id_;
     LeafDescription description_;
-    Tape tape_;  // SlotLayout::OnePerValue, so it can be pruned
+    Tape tape_;
     SearchRegion region_;  // the bounds, shrunk to the surface
     Method method_;
     RootFinderSettings settings_;

@@ -10,7 +10,18 @@ namespace zeroset {
 template <class F>
 BatchEvaluator<F>::BatchEvaluator(const Tape& tape)
     : tape_(&tape), slots_(static_cast<std::size_t>(tape.slot_count()) * lanes) {
-    for (const auto& [s, value] : tape.constants()) std::fill_n(slot(s), lanes, static_cast<F>(value));
+    load_constants();
+}
+
+template <class F>
+void BatchEvaluator<F>::rebind(const Tape& tape) {
+    tape_ = &tape;
+    load_constants();
+}
+
+template <class F>
+void BatchEvaluator<F>::load_constants() {
+    for (const auto& [s, value] : tape_->constants()) std::fill_n(slot(s), lanes, static_cast<F>(value));
 }
 
 template <class F>

@@ -20,11 +20,15 @@ public:
 
     explicit BatchEvaluator(const Tape& tape);
 
+    /// Switches to the original tape or one pruned from it, as Evaluator::rebind.
+    void rebind(const Tape& tape);
+
     /// out[i] = f(x[i], y[i], z[i]) for every i; all spans of equal length.
     void evaluate(std::span<const F> x, std::span<const F> y, std::span<const F> z, std::span<F> out);
 
 private:
     void evaluate_lanes();
+    void load_constants();
     F* slot(std::uint32_t s) { return slots_.data() + static_cast<std::size_t>(s) * lanes; }
 
     const Tape* tape_;

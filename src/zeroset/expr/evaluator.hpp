@@ -18,9 +18,7 @@ namespace zeroset {
 template <class T>
 class Evaluator {
 public:
-    explicit Evaluator(const Tape& tape) : tape_(&tape), slots_(tape.slot_count()) {
-        for (const auto& [slot, value] : tape.constants()) slots_[slot] = T(value);
-    }
+    explicit Evaluator(const Tape& tape) : tape_(&tape), slots_(tape.slot_count()) { load_constants(); }
 
     /// f(x, y, z) in the number type T.
     T operator()(const T& x, const T& y, const T& z) {
@@ -38,11 +36,19 @@ public:
 
     [[nodiscard]] const Tape& tape() const { return *tape_; }
 
-    /// Switches to another tape over the same slots and constants — one
-    /// pruned from this evaluator's original tape (expr/tape_pruner.hpp).
-    void rebind(const Tape& pruned) { tape_ = &pruned; }
+    /// Switches to another tape — the original one, or one pruned from it
+    /// (expr/tape_pruner.hpp), which never needs more slots — and loads its
+    /// constants.
+    void rebind(const Tape& tape) {
+        tape_ = &tape;
+        load_constants();
+    }
 
 private:
+    void load_constants() {
+        for (const auto& [slot, value] : tape_->constants()) slots_[slot] = T(value);
+    }
+
     const Tape* tape_;
     std::vector<T> slots_;
 };

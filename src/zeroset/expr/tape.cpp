@@ -38,7 +38,7 @@ bool is_leaf(Op op) { return op_arity(op) == 0; }
 
 }  // namespace
 
-Tape::Tape(const Expr& root, SlotLayout layout) : layout_(layout) {
+Tape::Tape(const Expr& root) {
     const std::vector<Expr> order = topological_order(root);
 
     // Value number of each node = its index in `order`; find each value's last use.
@@ -74,7 +74,7 @@ Tape::Tape(const Expr& root, SlotLayout layout) : layout_(layout) {
                                : (arity == 2 ? slot[index[e.operand(1).id()]] : 0u);
         // The output gets a slot before the operands' dead slots are freed, so
         // it never aliases an operand (the batch evaluator relies on that).
-        if (free_slots.empty() || layout == SlotLayout::OnePerValue) {
+        if (free_slots.empty()) {
             slot[i] = slot_count_++;
         } else {
             slot[i] = free_slots.back();

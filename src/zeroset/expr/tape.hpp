@@ -1,12 +1,11 @@
 // Tape: an expression compiled to a flat, topologically ordered list of
 // clauses {op, out, a, b} over numbered slots — the form every evaluator walks.
 // Slots 0, 1, 2 hold x, y, z; then one slot per distinct constant (loaded once,
-// never overwritten); then working slots. With SlotLayout::Reuse a slot is
-// reused once its value is dead (linear-scan register allocation), so a
-// 10 000-clause model needs only a few hundred slots and stays in cache. With
-// SlotLayout::OnePerValue every value keeps its own slot, which is what tape
-// pruning needs (expr/tape_pruner.hpp). Either way a clause's output slot
-// never aliases one of its operands (the batch evaluator relies on that).
+// never overwritten); then working slots, each reused once its value is dead
+// (linear-scan register allocation), so a 10 000-clause model needs only a
+// few hundred slots and stays in cache. A clause's output slot never aliases
+// one of its operands (the batch evaluator relies on that). Tapes pruned to a
+// box (expr/tape_pruner.hpp) follow the same rules with their own numbering.
 #pragma once
 
 #include <cstdint>
@@ -25,13 +24,11 @@ struct Clause {
     std::uint32_t b;  // second operand slot; for Powi the exponent (as int)
 };
 
-enum class SlotLayout { Reuse, OnePerValue };
-
 class Tape {
 public:
     static constexpr std::uint32_t slot_x = 0, slot_y = 1, slot_z = 2;
 
-    explicit Tape(const Expr& root, SlotLayout layout = SlotLayout::Reuse);
+    explicit Tape(const Expr& root);
     /// An empty tape, to be filled by TapePruner.
     Tape() = default;
 
@@ -39,7 +36,6 @@ public:
     [[nodiscard]] const std::vector<std::pair<std::uint32_t, double>>& constants() const { return constants_; }
     [[nodiscard]] std::uint32_t slot_count() const { return slot_count_; }
     [[nodiscard]] std::uint32_t result_slot() const { return result_slot_; }
-    [[nodiscard]] SlotLayout layout() const { return layout_; }
     /// True when every op is +, −, ×, neg, square or powi with n ≥ 0.
     [[nodiscard]] bool is_polynomial() const;
 
@@ -50,7 +46,6 @@ private:
     std::vector<std::pair<std::uint32_t, double>> constants_;
     std::uint32_t slot_count_ = 3;
     std::uint32_t result_slot_ = 0;
-    SlotLayout layout_ = SlotLayout::OnePerValue;
 };
 
 }  // namespace zeroset

@@ -5,10 +5,14 @@
 // near the box, and every later evaluation inside the box (points,
 // gradients, sub-boxes) walks the short tape instead.
 //
-// Tapes to prune must use SlotLayout::OnePerValue; a pruned tape keeps its
-// parent's slot numbering, so evaluators switch to it with rebind() and
-// a pruned tape can be pruned again over a smaller box. Pruning reuses its
-// buffers and the output tape's: after warm-up it does not allocate.
+// Pruning and slot allocation are one job: the pruned tape gets its own,
+// compact slot numbering (live constants first, then working slots reused
+// once dead), so a short tape is also short in slots and a batch of lanes
+// over it stays in L1. The analysis follows values, not slots, so any tape
+// can be pruned — the full tape or one already pruned, over a smaller box.
+// Evaluators switch to a pruned tape with rebind(), which loads its
+// constants. Pruning reuses its buffers and the output tape's: after
+// warm-up it does not allocate.
 #pragma once
 
 #include <cstdint>
@@ -22,7 +26,7 @@ namespace zeroset {
 
 class TapePruner {
 public:
-    /// Sized for `full` (SlotLayout::OnePerValue) and every tape pruned from it.
+    /// Sized for `full` and every tape pruned from it.
     explicit TapePruner(const Tape& full);
 
     /// Evaluates `source` (the full tape or one pruned from it) over the box
@@ -33,14 +37,22 @@ private:
     enum class Choice : std::uint8_t { Both, Left, Right };
 
     Interval evaluate(const Tape& source, const Box3& box);
-    void keep_live_clauses(const Tape& source, Tape& out);
-    [[nodiscard]] std::uint32_t resolve(std::uint32_t slot) const;
+    void mark_live_values(const Tape& source);
+    void emit_live_clauses(const Tape& source, Tape& out);
+    [[nodiscard]] bool is_clause_value(std::uint32_t id) const { return id >= base_; }
 
+    // A value's id is its slot for x, y, z and constants (never overwritten),
+    // and base_ + i for the result of clause i.
+    std::uint32_t base_;
     std::vector<Interval> slots_;
-    std::vector<Choice> choices_;          // per clause of the source tape
-    std::vector<std::uint32_t> live_;      // slot is live when live_[slot] == epoch_
-    std::vector<std::uint32_t> aliased_;   // slot is an alias when aliased_[slot] == epoch_
-    std::vector<std::uint32_t> alias_of_;  // … of this slot
+    std::vector<std::uint32_t> value_in_slot_;  // during evaluate(): the id each slot holds
+    std::vector<Choice> choices_;               // per clause of the source tape
+    std::vector<std::uint32_t> operand_a_, operand_b_;  // per clause: its operands' ids, min/max resolved
+    std::vector<std::uint32_t> equals_;         // per clause: the id its value equals (itself unless chosen)
+    std::vector<std::uint32_t> live_;           // per id: live when live_[id] == epoch_
+    std::vector<std::uint32_t> uses_;           // per live id: uses by live clauses still to emit
+    std::vector<std::uint32_t> new_slot_;       // per live id: its slot in the pruned tape
+    std::vector<std::uint32_t> free_slots_;
     std::uint32_t epoch_ = 0;
 };
 

@@ -28,7 +28,6 @@ namespace zeroset {
 
 class RayFunction {
 public:
-    /// Pruning (prune()) needs a tape with SlotLayout::OnePerValue.
     explicit RayFunction(const Tape& tape);
 
     /// Starts a new ray on the full tape.
