@@ -10,5 +10,6 @@ namespace zeroset::cli {
 int render_command(const std::vector<std::string>& args);
 int basins_command(const std::vector<std::string>& args);
 int ray_command(const std::vector<std::string>& args);
+int slice_command(const std::vector<std::string>& args);
 
 }  // namespace zeroset::cli

@@ -17,6 +17,7 @@ Usage:
   zeroset render [SCENE] [options]   render a scene (the built-in default when SCENE is omitted)
   zeroset basins [SCENE] [options]   map where Newton's method converges along a ray (the survey's Figure 5)
   zeroset ray [SCENE] [options]      every intersection method on one ray: hits, evaluations, a plot of H(t)
+  zeroset slice INPUT [options]      f on a plane: its sign, or its value with the zero contour
   zeroset --help                     this text
   zeroset COMMAND --help             a command's options
   zeroset --version                  the version
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
         if (args[0] == "render") return zeroset::cli::render_command(rest);
         if (args[0] == "basins") return zeroset::cli::basins_command(rest);
         if (args[0] == "ray") return zeroset::cli::ray_command(rest);
+        if (args[0] == "slice") return zeroset::cli::slice_command(rest);
         throw zeroset::cli::UsageError("unknown command '" + args[0] + "' (try zeroset --help)");
     } catch (const zeroset::cli::UsageError& e) {
         std::fprintf(stderr, "zeroset: %s\n", e.what());

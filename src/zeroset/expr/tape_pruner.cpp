@@ -22,6 +22,8 @@ TapePruner::TapePruner(const Tape& full)
       new_slot_(full.slot_count() + full.clauses().size()) {}
 
 Interval TapePruner::evaluate(const Tape& source, const Box3& box) {
+    source_ = &source;
+    choices_made_ = 0;
     Interval* s = slots_.data();
     s[Tape::slot_x] = {box.lo.x, box.hi.x};
     s[Tape::slot_y] = {box.lo.y, box.hi.y};
@@ -45,6 +47,7 @@ Interval TapePruner::evaluate(const Tape& source, const Box3& box) {
             const bool a_below = a.hi <= b.lo, b_below = b.hi <= a.lo;  // false for empty intervals
             if (c.op == Op::Min ? a_below : b_below) choices_[i] = Choice::Left;
             else if (c.op == Op::Min ? b_below : a_below) choices_[i] = Choice::Right;
+            choices_made_ += choices_[i] != Choice::Both;
         }
         const auto id = static_cast<std::uint32_t>(base_ + i);
         equals_[i] = choices_[i] == Choice::Left ? operand_a_[i] : choices_[i] == Choice::Right ? operand_b_[i] : id;
@@ -54,7 +57,8 @@ Interval TapePruner::evaluate(const Tape& source, const Box3& box) {
     return s[source.result_slot()];
 }
 
-void TapePruner::mark_live_values(const Tape& source) {
+void TapePruner::mark_live_values() {
+    const Tape& source = *source_;
     if (++epoch_ == 0) {  // stamps wrapped: clear them once every 2^32 prunes
         std::fill(live_.begin(), live_.end(), 0);
         epoch_ = 1;
@@ -79,7 +83,8 @@ void TapePruner::mark_live_values(const Tape& source) {
     }
 }
 
-void TapePruner::emit_live_clauses(const Tape& source, Tape& out) {
+void TapePruner::emit_live_clauses(Tape& out) {
+    const Tape& source = *source_;
     out.clauses_.clear();
     out.constants_.clear();
     free_slots_.clear();
@@ -120,11 +125,9 @@ void TapePruner::emit_live_clauses(const Tape& source, Tape& out) {
     out.slot_count_ = next_slot;
 }
 
-Interval TapePruner::prune(const Tape& source, const Box3& box, Tape& out) {
-    const Interval value = evaluate(source, box);
-    mark_live_values(source);
-    emit_live_clauses(source, out);
-    return value;
+void TapePruner::simplify(Tape& out) {
+    mark_live_values();
+    emit_live_clauses(out);
 }
 
 }  // namespace zeroset

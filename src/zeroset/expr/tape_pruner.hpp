@@ -31,19 +31,33 @@ public:
 
     /// Evaluates `source` (the full tape or one pruned from it) over the box
     /// and writes into `out` the clauses live there. Returns f over the box.
-    Interval prune(const Tape& source, const Box3& box, Tape& out);
+    Interval prune(const Tape& source, const Box3& box, Tape& out) {
+        const Interval value = evaluate(source, box);
+        simplify(out);
+        return value;
+    }
+
+    /// prune() in two steps, for callers that may not need the pruned tape:
+    /// f over the box, recording which side of each min and max wins there…
+    Interval evaluate(const Tape& source, const Box3& box);
+    /// … whether any min or max has a side that wins over the whole box (if
+    /// none does, the pruned tape would be the source itself) …
+    [[nodiscard]] bool any_choice() const { return choices_made_ > 0; }
+    /// … and the tape pruned to the box of the last evaluate().
+    void simplify(Tape& out);
 
 private:
     enum class Choice : std::uint8_t { Both, Left, Right };
 
-    Interval evaluate(const Tape& source, const Box3& box);
-    void mark_live_values(const Tape& source);
-    void emit_live_clauses(const Tape& source, Tape& out);
+    void mark_live_values();
+    void emit_live_clauses(Tape& out);
     [[nodiscard]] bool is_clause_value(std::uint32_t id) const { return id >= base_; }
 
     // A value's id is its slot for x, y, z and constants (never overwritten),
     // and base_ + i for the result of clause i.
     std::uint32_t base_;
+    const Tape* source_ = nullptr;  // of the last evaluate()
+    std::size_t choices_made_ = 0;
     std::vector<Interval> slots_;
     std::vector<std::uint32_t> value_in_slot_;  // during evaluate(): the id each slot holds
     std::vector<Choice> choices_;               // per clause of the source tape

@@ -47,9 +47,17 @@ template <std::floating_point F> inline std::optional<int> integer_value(F a) {
     if (a == std::round(a) && std::abs(a) < F(1 << 30)) return static_cast<int>(a);
     return std::nullopt;
 }
-// NaN-propagating min/max: a NaN operand must not be silently dropped.
-template <std::floating_point F> inline F min(F a, F b) { return (a != a || b != b) ? a + b : (a < b ? a : b); }
-template <std::floating_point F> inline F max(F a, F b) { return (a != a || b != b) ? a + b : (a > b ? a : b); }
+// NaN-propagating min/max: a NaN operand must not be silently dropped. (If
+// b is NaN the comparison is false and b is returned.) Written without
+// branches, so lane loops over them vectorise.
+template <std::floating_point F> inline F min(F a, F b) {
+    const F smaller = a < b ? a : b;
+    return a != a ? a : smaller;
+}
+template <std::floating_point F> inline F max(F a, F b) {
+    const F larger = a > b ? a : b;
+    return a != a ? a : larger;
+}
 
 /// True when a ≤ b holds for every value the numbers stand for.
 template <std::floating_point F> inline bool certainly_le(F a, F b) { return a <= b; }

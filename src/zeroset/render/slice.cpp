@@ -1,0 +1,239 @@
+// Slicing by recursive tiles: the main thread visits the top levels of the
+// quadtree breadth first, then hands the tiles below to worker threads, each
+// with its own pruner, pruned tapes (one per depth) and batch evaluator.
+#include "zeroset/render/slice.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <span>
+#include <thread>
+
+#include "zeroset/expr/batch_evaluator.hpp"
+#include "zeroset/expr/tape_pruner.hpp"
+#include "zeroset/render/render_settings.hpp"
+
+namespace zeroset {
+
+namespace {
+
+// Leaves are evaluated pixel by pixel, without an interval evaluation of
+// their own: on prospero.vm a leaf's interval costs about as much as its
+// pixels in float lanes, so at 8×8 it would rarely pay.
+constexpr int leaf_size = 16;
+constexpr std::size_t leaf_pixels = static_cast<std::size_t>(leaf_size) * leaf_size;
+constexpr int max_depth = 18;  // tiles halve from at most 2^17 pixels down to 16
+
+void check_settings(const SliceSettings& s) {
+    require_in_range(s.size, 1, max_image_side, "size");
+    require_image_fits(s.size, s.size);
+    require_in_range(s.threads, 0, 4096, "threads");
+    require_in_range(s.plane.axis, 0, 2, "axis");
+    const SlicePlane& p = s.plane;
+    if (!(std::isfinite(p.at) && std::isfinite(p.min) && std::isfinite(p.max)))
+        throw RenderError("the slice's plane and square must be finite");
+    if (!(p.min < p.max)) throw RenderError("the slice's square is empty (need min < max)");
+}
+
+/// Where the pixel centres lie in space. Coordinates are computed once, in
+/// float — the precision pixels are evaluated in — and tile boxes are made
+/// of those same floats, so every evaluated point lies in its tile's box.
+class PixelGrid {
+public:
+    explicit PixelGrid(const SliceSettings& s) : axis_(s.plane.axis), at_(static_cast<float>(s.plane.at)) {
+        const double step = (s.plane.max - s.plane.min) / s.size;
+        for (int i = 0; i < s.size; ++i) {
+            across_.push_back(static_cast<float>(s.plane.min + (i + 0.5) * step));
+            up_.push_back(static_cast<float>(s.plane.max - (i + 0.5) * step));  // row 0 at the top
+        }
+        // Rounding to float is monotone, but two neighbouring centres may round
+        // alike; the boxes stay correct, as they only need lo ≤ hi.
+    }
+
+    /// The point of pixel (i, j), as (x, y, z).
+    [[nodiscard]] std::array<float, 3> point(int i, int j) const { return place(across_[i], up_[j]); }
+
+    /// The box around the centres of pixels [x0, x1) × [y0, y1).
+    [[nodiscard]] Box3 box(int x0, int y0, int x1, int y1) const {
+        const std::array<float, 3> lo = place(across_[x0], up_[y1 - 1]), hi = place(across_[x1 - 1], up_[y0]);
+        return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+    }
+
+private:
+    [[nodiscard]] std::array<float, 3> place(float across, float up) const {
+        switch (axis_) {
+            case 0: return {at_, across, up};
+            case 1: return {across, at_, up};
+            default: return {across, up, at_};
+        }
+    }
+
+    int axis_;
+    float at_;
+    std::vector<float> across_, up_;
+};
+
+/// A decided tile's value: the bound of f nearest 0, never rounded to 0.
+float decided_value(const Interval& f) {
+    constexpr float smallest = std::numeric_limits<float>::denorm_min();
+    if (f.lo > 0.0) return std::max(static_cast<float>(f.lo), smallest);
+    return std::min(static_cast<float>(f.hi), -smallest);
+}
+
+/// One thread's tools: the pruner, a tape per depth, the batch evaluator.
+class TileVisitor {
+public:
+    TileVisitor(const Tape& full, const PixelGrid& grid, const SliceSettings& settings, std::vector<float>& values)
+        : grid_(grid), size_(settings.size), every_pixel_(settings.every_pixel), values_(values), pruner_(full),
+          batch_(full), pruned_(max_depth) {}
+
+    /// Evaluates f over the tile of side `side` at (x0, y0) with `parent`'s
+    /// tape. Fills the tile when its sign is decided and returns nullptr;
+    /// else returns the tape for the tile: `pruned`, pruned to the tile, or
+    /// `parent` itself when no min or max could be pruned there.
+    const Tape* visit(int x0, int y0, int side, const Tape& parent, Tape& pruned) {
+        const int x1 = std::min(x0 + side, size_), y1 = std::min(y0 + side, size_);
+        const Interval f = pruner_.evaluate(parent, grid_.box(x0, y0, x1, y1));
+        ++stats.tiles;
+        stats.interval_clauses += parent.clauses().size();
+        const bool undefined = f.is_empty();
+        if (every_pixel_ || !(f.lo > 0.0 || f.hi < 0.0 || undefined)) {
+            if (!pruner_.any_choice()) return &parent;
+            pruner_.simplify(pruned);
+            return &pruned;
+        }
+        const float value = undefined ? std::numeric_limits<float>::quiet_NaN() : decided_value(f);
+        for (int y = y0; y < y1; ++y) std::fill(row(y) + x0, row(y) + x1, value);
+        ++stats.tiles_decided;
+        stats.pixels_decided += static_cast<std::uint64_t>(x1 - x0) * static_cast<std::uint64_t>(y1 - y0);
+        return nullptr;
+    }
+
+    /// The whole quadtree below the tile, depth first.
+    void descend(int x0, int y0, int side, const Tape& parent, int depth) {
+        if (x0 >= size_ || y0 >= size_) return;
+        const Tape* tape = visit(x0, y0, side, parent, pruned_[static_cast<std::size_t>(depth)]);
+        if (!tape) return;
+        if (side <= leaf_size) {
+            evaluate_leaf(x0, y0, *tape);
+            return;
+        }
+        const int half = side / 2;
+        for (const auto& [dx, dy] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}})
+            descend(x0 + dx * half, y0 + dy * half, half, *tape, depth + 1);
+    }
+
+    SliceStats stats;
+
+private:
+    float* row(int y) { return values_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(size_); }
+
+    void evaluate_leaf(int x0, int y0, const Tape& tape) {
+        const int x1 = std::min(x0 + leaf_size, size_), y1 = std::min(y0 + leaf_size, size_);
+        std::size_t n = 0;
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x, ++n) {
+                const std::array<float, 3> p = grid_.point(x, y);
+                xs_[n] = p[0];
+                ys_[n] = p[1];
+                zs_[n] = p[2];
+            }
+        }
+        batch_.rebind(tape);
+        batch_.evaluate(std::span(xs_).first(n), std::span(ys_).first(n), std::span(zs_).first(n),
+                        std::span(out_).first(n));
+        n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) row(y)[x] = out_[n++];
+        ++stats.leaf_batches;
+        stats.pixels_evaluated += n;
+        stats.leaf_clauses += tape.clauses().size();
+        stats.max_leaf_slots = std::max(stats.max_leaf_slots, tape.slot_count());
+    }
+
+    const PixelGrid& grid_;
+    int size_;
+    bool every_pixel_;
+    std::vector<float>& values_;
+    TapePruner pruner_;
+    BatchEvaluator<float> batch_;
+    std::vector<Tape> pruned_;  // pruned_[d]: the tape of the tile being visited at depth d
+    std::array<float, leaf_pixels> xs_{}, ys_{}, zs_{}, out_{};
+};
+
+void add(SliceStats& total, const SliceStats& part) {
+    total.tiles += part.tiles;
+    total.tiles_decided += part.tiles_decided;
+    total.pixels_decided += part.pixels_decided;
+    total.leaf_batches += part.leaf_batches;
+    total.pixels_evaluated += part.pixels_evaluated;
+    total.leaf_clauses += part.leaf_clauses;
+    total.interval_clauses += part.interval_clauses;
+    total.max_leaf_slots = std::max(total.max_leaf_slots, part.max_leaf_slots);
+}
+
+/// A tile for a worker, and the tape pruned to the tile above it.
+struct Task {
+    int x0, y0;
+    const Tape* parent;
+};
+
+}  // namespace
+
+SliceField slice(const Tape& tape, const SliceSettings& settings) {
+    check_settings(settings);
+    SliceField field;
+    field.size = settings.size;
+    field.values.resize(static_cast<std::size_t>(settings.size) * static_cast<std::size_t>(settings.size));
+    const PixelGrid grid(settings);
+
+    int root_side = leaf_size;
+    while (root_side < settings.size) root_side *= 2;
+    const int thread_count =
+        settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    // Tiles of this side go to the workers: up to 16 × 16 of them.
+    const int task_side = std::max(2 * leaf_size, root_side / 16);
+
+    // The levels above the tasks, breadth first on this thread.
+    TileVisitor planner(tape, grid, settings, field.values);
+    std::deque<Tape> level_tapes;  // stable addresses for the tasks' parents
+    std::vector<Task> tasks{{0, 0, &tape}};
+    for (int side = root_side; side > task_side; side /= 2) {
+        std::vector<Task> below;
+        for (const Task& t : tasks) {
+            if (t.x0 >= settings.size || t.y0 >= settings.size) continue;
+            const Tape* tile_tape = planner.visit(t.x0, t.y0, side, *t.parent, level_tapes.emplace_back());
+            if (!tile_tape) continue;
+            const int half = side / 2;
+            for (const auto& [dx, dy] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}})
+                below.push_back({t.x0 + dx * half, t.y0 + dy * half, tile_tape});
+        }
+        tasks = std::move(below);
+    }
+    field.stats = planner.stats;
+
+    std::atomic<std::size_t> next_task{0};
+    std::vector<SliceStats> worker_stats(static_cast<std::size_t>(thread_count));
+    const auto worker = [&](std::size_t index) {
+        TileVisitor visitor(tape, grid, settings, field.values);
+        for (std::size_t i = next_task++; i < tasks.size(); i = next_task++)
+            visitor.descend(tasks[i].x0, tasks[i].y0, task_side, *tasks[i].parent, 0);
+        worker_stats[index] = visitor.stats;
+    };
+    {
+        std::vector<std::jthread> pool;
+        const auto helpers = static_cast<std::size_t>(std::min<std::size_t>(
+            static_cast<std::size_t>(thread_count), std::max<std::size_t>(1, tasks.size())));
+        for (std::size_t t = 1; t < helpers; ++t) pool.emplace_back(worker, t);
+        worker(0);
+    }
+    for (const SliceStats& s : worker_stats) add(field.stats, s);
+    field.stats.full_clauses = tape.clauses().size();
+    field.stats.full_slots = tape.slot_count();
+    return field;
+}
+
+}  // namespace zeroset
