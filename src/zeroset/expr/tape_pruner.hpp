@@ -46,27 +46,37 @@ public:
     /// … and the tape pruned to the box of the last evaluate().
     void simplify(Tape& out);
 
+
 private:
     enum class Choice : std::uint8_t { Both, Left, Right };
 
-    void mark_live_values();
-    void emit_live_clauses(Tape& out);
-    [[nodiscard]] bool is_clause_value(std::uint32_t id) const { return id >= base_; }
+    /// The value `v` is over the box: the winner of a min or max that has one.
+    [[nodiscard]] ValueId resolve(ValueId v) const {
+        if ((v & clause_value) == 0) return v;
+        const std::uint32_t j = v & ~clause_value;
+        return choices_[j] == Choice::Both ? v : equals_[j];
+    }
+    /// The slot of `v` in the pruned tape while it is being built, given at
+    /// its last use (the first seen walking backwards), encoded until the
+    /// number of constants is known.
+    std::uint32_t take_slot(ValueId v);
+    [[nodiscard]] std::uint32_t final_slot(std::uint32_t encoded) const;
+    [[nodiscard]] ValueId final_value(ValueId v) const;
 
-    // A value's id is its slot for x, y, z and constants (never overwritten),
-    // and base_ + i for the result of clause i.
-    std::uint32_t base_;
     const Tape* source_ = nullptr;  // of the last evaluate()
     std::size_t choices_made_ = 0;
     std::vector<Interval> slots_;
-    std::vector<std::uint32_t> value_in_slot_;  // during evaluate(): the id each slot holds
-    std::vector<Choice> choices_;               // per clause of the source tape
-    std::vector<std::uint32_t> operand_a_, operand_b_;  // per clause: its operands' ids, min/max resolved
-    std::vector<std::uint32_t> equals_;         // per clause: the id its value equals (itself unless chosen)
-    std::vector<std::uint32_t> live_;           // per id: live when live_[id] == epoch_
-    std::vector<std::uint32_t> uses_;           // per live id: uses by live clauses still to emit
-    std::vector<std::uint32_t> new_slot_;       // per live id: its slot in the pruned tape
+    std::vector<Choice> choices_;     // per clause of the source tape
+    std::vector<ValueId> equals_;     // per chosen min/max: the (resolved) value it equals
+    // Per clause and per constant of the source, stamped with epoch_ once live.
+    std::vector<std::uint32_t> clause_live_, constant_live_;
+    std::vector<std::uint32_t> working_slot_;    // per live clause: its working slot
+    std::vector<std::uint32_t> emitted_at_;      // per live clause: its position, counted from the end
+    std::vector<std::uint32_t> constant_index_;  // per live constant: its place among the pruned tape's constants
     std::vector<std::uint32_t> free_slots_;
+    std::vector<Clause> reversed_;  // the kept clauses, last first, slots still marked
+    std::vector<ClauseOperands> reversed_operands_;
+    std::uint32_t working_slots_ = 0, constants_ = 0, emitted_ = 0;
     std::uint32_t epoch_ = 0;
 };
 
