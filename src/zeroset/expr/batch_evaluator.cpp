@@ -1,9 +1,7 @@
-// The lane loops of BatchEvaluator, one per op, generated from the op table.
+// BatchEvaluator: copying points in and values out around the lane loops.
 #include "zeroset/expr/batch_evaluator.hpp"
 
 #include <algorithm>
-
-#include "zeroset/math/scalar.hpp"
 
 namespace zeroset {
 
@@ -39,28 +37,9 @@ void BatchEvaluator<F>::evaluate(std::span<const F> x, std::span<const F> y, std
 
 // Every lane is computed even in a partial batch: the loop count stays a
 // compile-time constant (clean SIMD), and stale lanes are simply not copied out.
-// A clause's output slot never aliases its operands (see Tape), hence __restrict.
 template <class F>
 void BatchEvaluator<F>::evaluate_lanes() {
-    for (const Clause& c : tape_->clauses()) {
-        F* __restrict out = slot(c.out);
-        const F* __restrict pa = slot(c.a);
-        const F* __restrict pb = c.op == Op::Powi ? pa : slot(c.b);
-        const int n = static_cast<int>(c.b);
-        (void)n;
-        switch (c.op) {
-#define ZEROSET_LANE_LOOP(name, vm, arity, expr)       \
-    case Op::name:                                     \
-        for (std::size_t i = 0; i < lanes; ++i) {    \
-            const F a = pa[i];                         \
-            [[maybe_unused]] const F b = pb[i];        \
-            out[i] = expr;                             \
-        }                                              \
-        break;
-            ZEROSET_OPS(ZEROSET_LANE_LOOP)
-#undef ZEROSET_LANE_LOOP
-        }
-    }
+    run_batch_lanes(tape_->clauses().data(), tape_->clauses().size(), slots_.data());
 }
 
 template class BatchEvaluator<float>;

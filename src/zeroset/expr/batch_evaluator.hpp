@@ -1,14 +1,15 @@
 // BatchEvaluator<F>: f at many points per walk of the tape. Slots hold a
 // fixed number of lanes in structure-of-arrays form, and each clause runs a
-// tight loop over its lanes that the compiler turns into SIMD — so the
-// interpretation cost (one op dispatch per clause) is paid once per `lanes`
-// points instead of once per point.
+// SIMD loop over its lanes (expr/batch_lanes.hpp, at the CPU's best width)
+// — so the interpretation cost (one op dispatch per clause) is paid once per
+// `lanes` points instead of once per point.
 #pragma once
 
 #include <cstddef>
 #include <span>
 #include <vector>
 
+#include "zeroset/expr/batch_lanes.hpp"
 #include "zeroset/expr/tape.hpp"
 
 namespace zeroset {
@@ -16,7 +17,7 @@ namespace zeroset {
 template <class F>
 class BatchEvaluator {
 public:
-    static constexpr std::size_t lanes = 64;
+    static constexpr std::size_t lanes = batch_lanes;
 
     explicit BatchEvaluator(const Tape& tape);
 

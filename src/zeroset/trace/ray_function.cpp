@@ -8,7 +8,7 @@
 namespace zeroset {
 
 RayFunction::RayFunction(const Tape& tape)
-    : tape_(&tape), point_(tape), jet_(tape), value_enclosure_(tape), enclosure_(tape), slope_(tape) {}
+    : tape_(&tape), point_(tape), jet_(tape), value_enclosure_(tape), enclosure_(tape), slope_(tape), bound_(&tape) {}
 
 void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;
@@ -63,11 +63,19 @@ Interval RayFunction::prune(std::size_t depth, double a, double b, TraceCounters
     if (!pruner_) {
         pruner_.emplace(*tape_);
         pruned_.resize(SegmentStack::max_depth);
+        tape_at_.resize(SegmentStack::max_depth);
     }
-    const Tape& parent = depth == 0 ? *tape_ : pruned_[depth - 1];
-    Tape& tape = pruned_[depth];
-    const Interval f = pruner_->prune(parent, segment_box(a, b), tape);
-    use_tape(tape);
+    const Tape& parent = depth == 0 ? *tape_ : *tape_at_[depth - 1];
+    const Interval f = pruner_->evaluate(parent, segment_box(a, b));
+    // Where no min or max has a winner the pruned tape would be the parent.
+    if (pruner_->any_choice()) {
+        pruner_->simplify(pruned_[depth]);
+        tape_at_[depth] = &pruned_[depth];
+        use_tape(pruned_[depth]);
+    } else {
+        tape_at_[depth] = &parent;
+        if (bound_ != &parent) use_tape(parent);  // else the evaluators already walk it
+    }
     return f;
 }
 
@@ -82,7 +90,7 @@ void RayFunction::use_tape(const Tape& tape) {
     value_enclosure_.rebind(tape);
     enclosure_.rebind(tape);
     slope_.rebind(tape);
-    pruned_now_ = &tape != tape_;
+    bound_ = &tape;
 }
 
 }  // namespace zeroset

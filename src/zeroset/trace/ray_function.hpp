@@ -65,7 +65,7 @@ public:
     [[nodiscard]] Box3 segment_box(double a, double b) const;
     /// Goes back to the full tape (valid everywhere), as after set_ray().
     void use_full_tape() {
-        if (pruned_now_) use_tape(*tape_);
+        if (bound_ != tape_) use_tape(*tape_);
     }
 
     /// Records that H is NaN at p (counted in TraceCounters::nan_evaluations).
@@ -93,8 +93,9 @@ private:
     Evaluator<Jet<Interval>> enclosure_;
     Evaluator<Dual<Interval>> slope_;
     std::optional<TapePruner> pruner_;  // made on the first prune()
-    std::vector<Tape> pruned_;          // pruned_[d]: the tape pruned at depth d
-    bool pruned_now_ = false;           // an evaluator walks a pruned tape
+    std::vector<Tape> pruned_;          // pruned_[d]: the tape pruned at depth d, if any
+    std::vector<const Tape*> tape_at_;  // the tape in use at depth d: pruned_[d] or its parent's
+    const Tape* bound_;                 // the tape the evaluators walk
 };
 
 }  // namespace zeroset

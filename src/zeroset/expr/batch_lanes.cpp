@@ -1,0 +1,164 @@
+// Highway's foreach_target compiles this file once per SIMD target; HWY_ONCE
+// marks the part compiled once, which picks the target at run time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "zeroset/expr/batch_lanes.cpp"
+#include <hwy/foreach_target.h>  // before highway.h, which it includes once per target
+#include <hwy/highway.h>
+#include <hwy/contrib/math/math-inl.h>
+
+#include <cmath>
+#include <limits>
+
+#include "zeroset/expr/batch_lanes.hpp"
+#include "zeroset/math/scalar.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace zeroset {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+/// The ranges in which Highway's vector functions keep their stated accuracy.
+template <class F>
+struct VectorMathRange {
+    static constexpr F exp_max = sizeof(F) == 4 ? F(104) : F(706);
+    static constexpr F trig_max = F(39000);
+};
+
+template <class F>
+class LaneLoops {
+public:
+    using D = hn::ScalableTag<F>;
+    using V = hn::Vec<D>;
+
+    static void run(const Clause* clauses, std::size_t count, F* slots) {
+        for (std::size_t k = 0; k < count; ++k) {
+            const Clause& c = clauses[k];
+            F* HWY_RESTRICT out = slots + c.out * batch_lanes;
+            const F* HWY_RESTRICT a = slots + c.a * batch_lanes;
+            const F* HWY_RESTRICT b = c.op == Op::Powi ? a : slots + c.b * batch_lanes;
+            clause(c, out, a, b);
+        }
+    }
+
+private:
+    template <class Fn>
+    static void unary(F* HWY_RESTRICT out, const F* HWY_RESTRICT a, Fn fn) {
+        const D d;
+        for (std::size_t i = 0; i < batch_lanes; i += hn::Lanes(d)) hn::StoreU(fn(d, hn::LoadU(d, a + i)), d, out + i);
+    }
+    template <class Fn>
+    static void binary(F* HWY_RESTRICT out, const F* HWY_RESTRICT a, const F* HWY_RESTRICT b, Fn fn) {
+        const D d;
+        for (std::size_t i = 0; i < batch_lanes; i += hn::Lanes(d))
+            hn::StoreU(fn(d, hn::LoadU(d, a + i), hn::LoadU(d, b + i)), d, out + i);
+    }
+    /// A vector function accurate in [lo, hi]; lanes outside (or NaN) take `scalar`.
+    template <class Fn, class Scalar>
+    static void ranged(F* HWY_RESTRICT out, const F* HWY_RESTRICT a, F lo, F hi, Fn fn, Scalar scalar) {
+        const D d;
+        const V vlo = hn::Set(d, lo), vhi = hn::Set(d, hi);
+        for (std::size_t i = 0; i < batch_lanes; i += hn::Lanes(d)) {
+            const V x = hn::LoadU(d, a + i);
+            hn::StoreU(fn(d, x), d, out + i);
+            const auto in_range = hn::And(hn::Ge(x, vlo), hn::Le(x, vhi));  // false for NaN
+            if (hn::AllTrue(d, in_range)) continue;
+            for (std::size_t j = i; j < i + hn::Lanes(d); ++j)
+                if (!(lo <= a[j] && a[j] <= hi)) out[j] = scalar(a[j]);
+        }
+    }
+    /// Per lane with the op table's scalar meaning.
+    static void per_lane(const Clause& c, F* HWY_RESTRICT out, const F* HWY_RESTRICT a, const F* HWY_RESTRICT b) {
+        for (std::size_t i = 0; i < batch_lanes; ++i) out[i] = apply_op<F>(c.op, a[i], b[i], static_cast<int>(c.b));
+    }
+    /// a^n by repeated squaring, the same products as scalar powi.
+    static V powi(D d, V a, int n) {
+        const bool invert = n < 0;
+        unsigned m = invert ? 0u - static_cast<unsigned>(n) : static_cast<unsigned>(n);
+        V result = hn::Set(d, F(1)), base = a;
+        while (m != 0) {
+            if (m & 1u) result = hn::Mul(result, base);
+            base = hn::Mul(base, base);
+            m >>= 1;
+        }
+        return invert ? hn::Div(hn::Set(d, F(1)), result) : result;
+    }
+
+    static void clause(const Clause& c, F* HWY_RESTRICT out, const F* HWY_RESTRICT a, const F* HWY_RESTRICT b) {
+        constexpr F max_finite = std::numeric_limits<F>::max();
+        using R = VectorMathRange<F>;
+        switch (c.op) {
+            case Op::Const: case Op::VarX: case Op::VarY: case Op::VarZ: break;  // never clauses
+            case Op::Add: binary(out, a, b, [](D, V x, V y) { return hn::Add(x, y); }); break;
+            case Op::Sub: binary(out, a, b, [](D, V x, V y) { return hn::Sub(x, y); }); break;
+            case Op::Mul: binary(out, a, b, [](D, V x, V y) { return hn::Mul(x, y); }); break;
+            case Op::Div: binary(out, a, b, [](D, V x, V y) { return hn::Div(x, y); }); break;
+            case Op::Neg: unary(out, a, [](D, V x) { return hn::Neg(x); }); break;
+            case Op::Square: unary(out, a, [](D, V x) { return hn::Mul(x, x); }); break;
+            case Op::Sqrt: unary(out, a, [](D, V x) { return hn::Sqrt(x); }); break;
+            case Op::Abs: unary(out, a, [](D, V x) { return hn::Abs(x); }); break;
+            case Op::Floor: unary(out, a, [](D, V x) { return hn::Floor(x); }); break;
+            // NaN-propagating, as scalar min/max: a NaN b fails the comparison and is returned.
+            case Op::Min:
+                binary(out, a, b, [](D, V x, V y) { return hn::IfThenElse(hn::IsNaN(x), x, hn::IfThenElse(hn::Lt(x, y), x, y)); });
+                break;
+            case Op::Max:
+                binary(out, a, b, [](D, V x, V y) { return hn::IfThenElse(hn::IsNaN(x), x, hn::IfThenElse(hn::Gt(x, y), x, y)); });
+                break;
+            case Op::Powi: {
+                const int n = static_cast<int>(c.b);
+                unary(out, a, [n](D d, V x) { return powi(d, x, n); });
+                break;
+            }
+            case Op::Exp:
+                ranged(out, a, -max_finite, R::exp_max, [](D d, V x) { return hn::Exp(d, x); }, [](F x) { return std::exp(x); });
+                break;
+            case Op::Log:
+                ranged(out, a, std::numeric_limits<F>::min(), max_finite, [](D d, V x) { return hn::Log(d, x); },
+                       [](F x) { return std::log(x); });
+                break;
+            case Op::Sin:
+                ranged(out, a, -R::trig_max, R::trig_max, [](D d, V x) { return hn::Sin(d, x); }, [](F x) { return std::sin(x); });
+                break;
+            case Op::Cos:
+                ranged(out, a, -R::trig_max, R::trig_max, [](D d, V x) { return hn::Cos(d, x); }, [](F x) { return std::cos(x); });
+                break;
+            case Op::Atan:
+                ranged(out, a, -max_finite, max_finite, [](D d, V x) { return hn::Atan(d, x); }, [](F x) { return std::atan(x); });
+                break;
+            case Op::Tan: case Op::Atan2: case Op::Hypot: case Op::Pow: per_lane(c, out, a, b); break;
+        }
+    }
+};
+
+void RunFloatLanes(const Clause* clauses, std::size_t count, float* slots) {
+    LaneLoops<float>::run(clauses, count, slots);
+}
+void RunDoubleLanes(const Clause* clauses, std::size_t count, double* slots) {
+    LaneLoops<double>::run(clauses, count, slots);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace zeroset
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace zeroset {
+
+HWY_EXPORT(RunFloatLanes);
+HWY_EXPORT(RunDoubleLanes);
+
+void run_batch_lanes(const Clause* clauses, std::size_t count, float* slots) {
+    HWY_DYNAMIC_DISPATCH(RunFloatLanes)(clauses, count, slots);
+}
+void run_batch_lanes(const Clause* clauses, std::size_t count, double* slots) {
+    HWY_DYNAMIC_DISPATCH(RunDoubleLanes)(clauses, count, slots);
+}
+
+std::string batch_simd_target() {
+    const std::int64_t available = hwy::SupportedTargets() & HWY_TARGETS;
+    // Highway numbers better targets with lower bits.
+    return available == 0 ? "none" : hwy::TargetName(available & -available);
+}
+
+}  // namespace zeroset
+#endif
