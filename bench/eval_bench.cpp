@@ -3,11 +3,11 @@
 // in the same binary — the machine's own ceiling for this kind of work.
 #include <benchmark/benchmark.h>
 
-#include <array>
 #include <fstream>
 #include <random>
 #include <vector>
 
+#include "fma_ceiling.hpp"
 #include "zeroset/expr/batch_evaluator.hpp"
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/vm_import.hpp"
@@ -74,31 +74,25 @@ void BM_PointEvaluator_Bear(benchmark::State& state) {
 BENCHMARK(BM_PointEvaluator_Bear<double>)->Arg(256);
 BENCHMARK(BM_PointEvaluator_Bear<zeroset::Interval>)->Arg(256);
 
-/// The ceiling: for each clause of the tape, one multiply-add over a batch of
-/// lanes held in cache — what the batch evaluator would reach with zero
-/// dispatch cost and the cheapest op everywhere.
+/// The ceiling (bench/fma_ceiling.hpp): for each clause of the tape, one
+/// multiply-add over a batch of lanes held in cache — what the batch
+/// evaluator would reach with zero dispatch cost and the cheapest op everywhere.
 template <class F>
 void BM_StraightLineFma(benchmark::State& state) {
     constexpr std::size_t lanes = zeroset::BatchEvaluator<F>::lanes;
-    constexpr std::size_t slot_count = 8;
     const std::size_t clauses = bear_tape().clauses().size();
     const auto n = static_cast<std::size_t>(state.range(0));
-    alignas(64) std::array<std::array<F, lanes>, slot_count> slots{};
-    for (std::size_t s = 0; s < slot_count; ++s)
-        for (std::size_t i = 0; i < lanes; ++i) slots[s][i] = static_cast<F>(0.5 + 1e-3 * static_cast<double>(s + i));
+    std::vector<F> slots(8 * lanes);
+    for (std::size_t i = 0; i < slots.size(); ++i) slots[i] = static_cast<F>(0.5 + 1e-3 * static_cast<double>(i % 97));
     for (auto _ : state) {
         for (std::size_t batch = 0; batch < n; batch += lanes) {
-            for (std::size_t c = 0; c < clauses; ++c) {
-                F* __restrict out = slots[c % slot_count].data();
-                const F* __restrict a = slots[(c + 1) % slot_count].data();
-                const F* __restrict b = slots[(c + 2) % slot_count].data();
-                for (std::size_t i = 0; i < lanes; ++i) out[i] = a[i] * b[i] + F(0.25);
-            }
+            zeroset::bench::straight_line_fma(slots.data(), clauses);
             benchmark::ClobberMemory();
         }
         benchmark::DoNotOptimize(slots.data());
     }
     set_rate(state, clauses, n);
+    state.SetLabel(zeroset::batch_simd_target());
 }
 BENCHMARK(BM_StraightLineFma<float>)->Arg(4096);
 BENCHMARK(BM_StraightLineFma<double>)->Arg(4096);

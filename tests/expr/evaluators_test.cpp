@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -13,6 +14,8 @@
 #include <set>
 #include <string>
 #include <vector>
+
+#include <hwy/targets.h>
 
 #include "zeroset/expr/batch_evaluator.hpp"
 #include "zeroset/expr/evaluator.hpp"
@@ -136,7 +139,22 @@ TEST(Evaluators, CasesCoverTheWholeOpTable) {
         EXPECT_TRUE(seen.contains(static_cast<Op>(i))) << "no case uses " << op_name(static_cast<Op>(i));
 }
 
-TEST(Evaluators, PlainAndBatchAgree) {
+/// The batch evaluator at every SIMD level Highway compiled that this CPU
+/// runs (expr/batch_lanes.hpp), each against the scalar evaluators.
+class BatchBackends : public ::testing::TestWithParam<std::int64_t> {
+protected:
+    void SetUp() override { hwy::SetSupportedTargetsForTest(GetParam()); }
+    void TearDown() override { hwy::SetSupportedTargetsForTest(0); }  // back to the CPU's own
+};
+
+INSTANTIATE_TEST_SUITE_P(Targets, BatchBackends, ::testing::ValuesIn(hwy::SupportedAndGeneratedTargets()),
+                         [](const ::testing::TestParamInfo<std::int64_t>& target) {
+                             return std::string(hwy::TargetName(target.param));
+                         });
+
+TEST_P(BatchBackends, RunAtTheirTarget) { EXPECT_EQ(batch_simd_target(), hwy::TargetName(GetParam())); }
+
+TEST_P(BatchBackends, PlainAndBatchAgree) {
     Sampler sampler{std::mt19937_64(1)};
     for (const Case& c : cases()) {
         SCOPED_TRACE(c.name);
@@ -171,6 +189,46 @@ TEST(Evaluators, PlainAndBatchAgree) {
                 << "float " << f << " vs double " << d << " at (" << x[i] << ", " << y[i] << ", " << z[i] << ")";
         }
         EXPECT_GT(defined, point_count / 4);
+    }
+}
+
+/// Lanes outside the vector functions' ranges, NaN and ±∞ behave as the
+/// scalar functions do: overflow to ∞, log of 0 and of negatives, huge
+/// arguments of sin and cos, NaN through min and max from either side.
+TEST_P(BatchBackends, EdgeValuesMatchTheScalarFunctions) {
+    const std::vector<double> edges = {0.0, -0.0, 1e-320, -1e-320, 1e-40, 1.0, -1.0, 88.0, 89.0, 100.0, 200.0,
+                                       710.0, 800.0, -800.0, 38999.0, 39001.0, -1e6, 1e30, -1e30,
+                                       std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                                       std::numeric_limits<double>::quiet_NaN()};
+    const std::vector<std::pair<std::string, Expr>> ops = {
+        {"exp", exp(X)}, {"log", log(X)}, {"sin", sin(X)}, {"cos", cos(X)}, {"atan", atan(X)}, {"sqrt", sqrt(X)},
+        {"min", min(X, Y)}, {"max", max(X, Y)}, {"min swapped", min(Y, X)}, {"max swapped", max(Y, X)},
+        {"div", X / Y}, {"powi -3", powi(X, -3)}, {"floor", floor(X)}, {"abs", abs(X)}};
+    for (const auto& [name, f] : ops) {
+        SCOPED_TRACE(name);
+        const Tape tape(f);
+        Evaluator<double> eval(tape);
+        Evaluator<float> eval_f(tape);
+        BatchEvaluator<double> batch(tape);
+        BatchEvaluator<float> batch_f(tape);
+        std::vector<double> x, y, z, out;
+        for (const double a : edges) {
+            for (const double b : {0.5, -2.0, std::numeric_limits<double>::quiet_NaN()}) {
+                x.push_back(a);
+                y.push_back(b);
+                z.push_back(0.0);
+            }
+        }
+        out.resize(x.size());
+        std::vector<float> xf(x.begin(), x.end()), yf(y.begin(), y.end()), zf(z.begin(), z.end()), out_f(x.size());
+        batch.evaluate(x, y, z, out);
+        batch_f.evaluate(xf, yf, zf, out_f);
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            EXPECT_TRUE(close(out[i], eval(x[i], y[i], 0.0), 1e-15))
+                << "double at " << x[i] << ", " << y[i] << ": " << out[i] << " vs " << eval(x[i], y[i], 0.0);
+            EXPECT_TRUE(close(out_f[i], eval_f(xf[i], yf[i], 0.0f), 1e-6))
+                << "float at " << xf[i] << ", " << yf[i] << ": " << out_f[i] << " vs " << eval_f(xf[i], yf[i], 0.0f);
+        }
     }
 }
 
