@@ -28,6 +28,7 @@ HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& coun
         if (visited == settings_.max_segments || counters.nan_evaluations != nans || counters.over_limit())
             return HitStatus::Failed;
         const Segment s = segments.pop();
+        if (!narrow(h, s, counters)) continue;  // and the tape pruned to s
         const Jet<Interval> e = h.enclose(s.a, s.b, counters);
         if (settings_.log) settings_.log->interval_boxes.push_back({s.a, s.b, e.v.lo, e.v.hi});
         if (e.v.is_empty()) return HitStatus::Failed;  // H is undefined (NaN) over the segment

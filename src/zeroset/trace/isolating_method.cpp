@@ -16,6 +16,7 @@ HitResult IsolatingMethod::first_hit(RayFunction& h, Span span, TraceCounters& c
     };
     const std::uint64_t nans = counters.nan_evaluations;
     const HitStatus status = isolate(h, span, counters, take_first);
+    h.use_full_tape();
     if (counters.nan_evaluations != nans) return {std::nullopt, HitStatus::Failed};  // H undefined on the way
     if (first) return {first, HitStatus::Ok};
     return {std::nullopt, status};
@@ -33,6 +34,12 @@ bool IsolatingMethod::split_undecided(const RayFunction& h, const Segment& s, co
     return kink && SegmentStack::above_resolution(s);
 }
 
+bool IsolatingMethod::narrow(RayFunction& h, const Segment& s, TraceCounters& counters) {
+    if (!h.can_prune()) return true;
+    const Interval f = h.prune(s.depth, s.a, s.b, counters);
+    return f.is_empty() || f.contains(0.0);  // an empty f (NaN) is left to the method's own enclosure
+}
+
 HitStatus IsolatingMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
     const std::size_t before = hits.size();
     const double merge_width = 4.0 * h.to_t(settings_.tangent_width);
@@ -44,6 +51,7 @@ HitStatus IsolatingMethod::all_hits(RayFunction& h, Span span, std::vector<doubl
     };
     const std::uint64_t nans = counters.nan_evaluations;
     const HitStatus status = isolate(h, span, counters, collect);
+    h.use_full_tape();
     if (status == HitStatus::Failed || counters.nan_evaluations != nans) return HitStatus::Failed;
     if (hits.size() - before > settings_.max_hits) {
         hits.pop_back();

@@ -32,6 +32,12 @@ protected:
     [[nodiscard]] bool split_undecided(const RayFunction& h, const Segment& s, const Jet<Interval>& e,
                                        const SegmentStack& segments) const;
 
+    /// Where the tape has a min or max, prunes it to the segment's box
+    /// (RayFunction::prune), so the enclosures and refinement on the segment
+    /// and its halves walk the shorter tape. False when f over the box
+    /// certainly excludes 0: no root on the segment.
+    static bool narrow(RayFunction& h, const Segment& s, TraceCounters& counters);
+
     RootFinderSettings settings_;
 };
 

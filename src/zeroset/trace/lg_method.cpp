@@ -26,6 +26,7 @@ HitStatus LgMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, 
         if (visited == settings_.max_segments || counters.nan_evaluations != nans || counters.over_limit())
             return HitStatus::Failed;
         const Segment s = segments.pop();
+        if (!narrow(h, s, counters)) continue;  // and the tape pruned to s
         const double tm = 0.5 * (s.a + s.b);                      // Fig. 11, step 1
         const double r = std::max(tm - s.a, s.b - tm);             // exact half-width bound
         const Jet<Interval> e = h.enclose(s.a, s.b, counters);

@@ -1,6 +1,7 @@
 // Evaluations along one ray, on the full tape or a pruned one.
 #include "zeroset/trace/ray_function.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "zeroset/trace/segment_stack.hpp"
@@ -8,7 +9,9 @@
 namespace zeroset {
 
 RayFunction::RayFunction(const Tape& tape)
-    : tape_(&tape), point_(tape), jet_(tape), value_enclosure_(tape), enclosure_(tape), slope_(tape), bound_(&tape) {}
+    : tape_(&tape), point_(tape), jet_(tape), value_enclosure_(tape), enclosure_(tape), slope_(tape), bound_(&tape),
+      can_prune_(std::any_of(tape.clauses().begin(), tape.clauses().end(),
+                             [](const Clause& c) { return c.op == Op::Min || c.op == Op::Max; })) {}
 
 void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;

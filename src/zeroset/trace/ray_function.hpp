@@ -61,6 +61,8 @@ public:
     /// A caller splitting the ray into nested segments prunes each one at its
     /// nesting depth, below SegmentStack::max_depth.
     Interval prune(std::size_t depth, double a, double b, TraceCounters& counters);
+    /// Whether prune() can shorten the tape: it has a min or max.
+    [[nodiscard]] bool can_prune() const { return can_prune_; }
     /// The box around the ray over [a, b], with the rounding of x_o + t·x_d enclosed.
     [[nodiscard]] Box3 segment_box(double a, double b) const;
     /// Goes back to the full tape (valid everywhere), as after set_ray().
@@ -96,6 +98,7 @@ private:
     std::vector<Tape> pruned_;          // pruned_[d]: the tape pruned at depth d, if any
     std::vector<const Tape*> tape_at_;  // the tape in use at depth d: pruned_[d] or its parent's
     const Tape* bound_;                 // the tape the evaluators walk
+    bool can_prune_;
 };
 
 }  // namespace zeroset
