@@ -31,15 +31,15 @@ template <std::floating_point F> inline F hypot(F a, F b) { return std::hypot(a,
 template <std::floating_point F> inline F pow(F a, F b) { return std::pow(a, b); }
 /// a^n for an integer n, by repeated squaring (exact sign for negative a).
 template <std::floating_point F> inline F powi(F a, int n) {
-    if (n < 0) return F(1) / powi(a, -n);
+    unsigned m = n < 0 ? 0u - static_cast<unsigned>(n) : static_cast<unsigned>(n);  // |n|, even for INT_MIN
     F result = F(1);
     F base = a;
-    while (n != 0) {
-        if (n & 1) result *= base;
+    while (m != 0) {
+        if (m & 1u) result *= base;
         base *= base;
-        n >>= 1;
+        m >>= 1;
     }
-    return result;
+    return n < 0 ? F(1) / result : result;
 }
 /// The value as an int when it is exactly a moderately sized integer: then
 /// pow(a, b) = powi(a, n), whose domain includes negative bases.

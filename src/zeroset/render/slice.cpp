@@ -1,6 +1,7 @@
-// Slicing by recursive tiles: the main thread visits the top levels of the
-// quadtree breadth first, then hands the tiles below to worker threads, each
-// with its own pruner, pruned tapes (one per depth) and batch evaluator.
+// Slicing by recursive tiles: the top levels of the quadtree breadth first,
+// then the subtrees below depth first, each step spread over the threads,
+// each thread with its own pruner, pruned tapes (one per depth) and batch
+// evaluator.
 #include "zeroset/render/slice.hpp"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <span>
 #include <thread>
@@ -20,12 +22,12 @@ namespace zeroset {
 
 namespace {
 
-// Leaves are evaluated pixel by pixel, without an interval evaluation of
-// their own: on prospero.vm a leaf's interval costs about as much as its
-// pixels in float lanes, so at 8×8 it would rarely pay.
+// A leaf, after its own interval evaluation, is evaluated pixel by pixel in
+// one batch of 256 lanes: on prospero.vm, 8×8 leaves cost as much in all,
+// as their intervals cost about what they save.
 constexpr int leaf_size = 16;
 constexpr std::size_t leaf_pixels = static_cast<std::size_t>(leaf_size) * leaf_size;
-constexpr int max_depth = 18;  // tiles halve from at most 2^17 pixels down to 16
+constexpr int max_depth = 16;  // more than the halvings from any task's tile (≤ 2^16 pixels) to a leaf
 
 void check_settings(const SliceSettings& s) {
     require_in_range(s.size, 1, max_image_side, "size");
@@ -76,11 +78,14 @@ private:
     std::vector<float> across_, up_;
 };
 
-/// A decided tile's value: the bound of f nearest 0, never rounded to 0.
+/// A decided tile's value: the bound of f nearest 0, rounded towards 0 but
+/// never to 0, so |f| is at least its magnitude all over the tile.
 float decided_value(const Interval& f) {
     constexpr float smallest = std::numeric_limits<float>::denorm_min();
-    if (f.lo > 0.0) return std::max(static_cast<float>(f.lo), smallest);
-    return std::min(static_cast<float>(f.hi), -smallest);
+    const double bound = f.lo > 0.0 ? f.lo : f.hi;
+    float value = static_cast<float>(bound);
+    if (std::abs(static_cast<double>(value)) > std::abs(bound)) value = std::nextafter(value, 0.0f);
+    return f.lo > 0.0 ? std::max(value, smallest) : std::min(value, -smallest);
 }
 
 /// One thread's tools: the pruner, a tape per depth, the batch evaluator.
@@ -183,6 +188,19 @@ struct Task {
 
 }  // namespace
 
+/// Calls work(visitor, i) for every i < count, spread over the visitors'
+/// threads (visitor 0 on this one).
+template <class Work>
+void in_parallel(std::vector<TileVisitor>& visitors, std::size_t count, const Work& work) {
+    std::atomic<std::size_t> next{0};
+    const auto run = [&](TileVisitor& visitor) {
+        for (std::size_t i = next++; i < count; i = next++) work(visitor, i);
+    };
+    std::vector<std::jthread> pool;
+    for (std::size_t t = 1; t < std::min(visitors.size(), count); ++t) pool.emplace_back(run, std::ref(visitors[t]));
+    run(visitors[0]);
+}
+
 SliceField slice(const Tape& tape, const SliceSettings& settings) {
     check_settings(settings);
     SliceField field;
@@ -194,43 +212,37 @@ SliceField slice(const Tape& tape, const SliceSettings& settings) {
     while (root_side < settings.size) root_side *= 2;
     const int thread_count =
         settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    // Tiles of this side go to the workers: up to 16 × 16 of them.
-    const int task_side = std::max(2 * leaf_size, root_side / 16);
+    std::vector<TileVisitor> visitors;
+    visitors.reserve(static_cast<std::size_t>(thread_count));
+    for (int t = 0; t < thread_count; ++t) visitors.emplace_back(tape, grid, settings, field.values);
 
-    // The levels above the tasks, breadth first on this thread.
-    TileVisitor planner(tape, grid, settings, field.values);
-    std::deque<Tape> level_tapes;  // stable addresses for the tasks' parents
+    // The levels above the tasks breadth first, each level's tiles in
+    // parallel; then the tasks' subtrees depth first, in parallel.
+    const int task_side = std::max(2 * leaf_size, root_side / 16);  // up to 16 × 16 tasks
+    std::deque<std::vector<Tape>> level_tapes;  // stable addresses for the tiles below
     std::vector<Task> tasks{{0, 0, &tape}};
     for (int side = root_side; side > task_side; side /= 2) {
+        std::vector<Tape>& tapes = level_tapes.emplace_back(tasks.size());
+        std::vector<const Tape*> tile_tapes(tasks.size(), nullptr);
+        in_parallel(visitors, tasks.size(), [&](TileVisitor& visitor, std::size_t i) {
+            const Task& t = tasks[i];
+            if (t.x0 < settings.size && t.y0 < settings.size)
+                tile_tapes[i] = visitor.visit(t.x0, t.y0, side, *t.parent, tapes[i]);
+        });
         std::vector<Task> below;
-        for (const Task& t : tasks) {
-            if (t.x0 >= settings.size || t.y0 >= settings.size) continue;
-            const Tape* tile_tape = planner.visit(t.x0, t.y0, side, *t.parent, level_tapes.emplace_back());
-            if (!tile_tape) continue;
-            const int half = side / 2;
+        const int half = side / 2;
+        for (std::size_t i = 0; i < tasks.size(); ++i) {
+            if (!tile_tapes[i]) continue;
             for (const auto& [dx, dy] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}})
-                below.push_back({t.x0 + dx * half, t.y0 + dy * half, tile_tape});
+                below.push_back({tasks[i].x0 + dx * half, tasks[i].y0 + dy * half, tile_tapes[i]});
         }
         tasks = std::move(below);
     }
-    field.stats = planner.stats;
+    in_parallel(visitors, tasks.size(), [&](TileVisitor& visitor, std::size_t i) {
+        visitor.descend(tasks[i].x0, tasks[i].y0, task_side, *tasks[i].parent, 0);
+    });
 
-    std::atomic<std::size_t> next_task{0};
-    std::vector<SliceStats> worker_stats(static_cast<std::size_t>(thread_count));
-    const auto worker = [&](std::size_t index) {
-        TileVisitor visitor(tape, grid, settings, field.values);
-        for (std::size_t i = next_task++; i < tasks.size(); i = next_task++)
-            visitor.descend(tasks[i].x0, tasks[i].y0, task_side, *tasks[i].parent, 0);
-        worker_stats[index] = visitor.stats;
-    };
-    {
-        std::vector<std::jthread> pool;
-        const auto helpers = static_cast<std::size_t>(std::min<std::size_t>(
-            static_cast<std::size_t>(thread_count), std::max<std::size_t>(1, tasks.size())));
-        for (std::size_t t = 1; t < helpers; ++t) pool.emplace_back(worker, t);
-        worker(0);
-    }
-    for (const SliceStats& s : worker_stats) add(field.stats, s);
+    for (const TileVisitor& v : visitors) add(field.stats, v.stats);
     field.stats.full_clauses = tape.clauses().size();
     field.stats.full_slots = tape.slot_count();
     return field;

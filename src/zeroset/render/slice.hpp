@@ -5,10 +5,10 @@
 // interval evaluation of the tape (expr/tape_pruner.hpp) both decides the
 // sign of f on the whole tile when it can — the tile is then filled without
 // evaluating a pixel — and prunes the tape to the clauses live there, so
-// its four sub-tiles walk a shorter tape. Tiles of 8×8 pixels are evaluated
-// point by point, 64 pixels per walk of their pruned tape, in float lanes
-// (expr/batch_evaluator.hpp). A 7 866-clause model typically reaches its
-// leaves with a few dozen clauses.
+// its four sub-tiles walk a shorter tape. Tiles of 16×16 pixels are
+// evaluated point by point, 256 pixels in one walk of their pruned tape, in
+// float SIMD lanes (expr/batch_evaluator.hpp). A 7 866-clause model
+// typically reaches its leaves with a few dozen clauses.
 //
 // Signs decided by intervals are certain. Pixels are evaluated in float, so
 // where |f| is within float rounding of 0 a pixel's sign may differ from

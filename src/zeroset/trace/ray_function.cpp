@@ -17,6 +17,7 @@ void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;
     const double length = std::hypot(ray.dir.x, ray.dir.y, ray.dir.z);  // no underflow for tiny directions
     dir_length_ = length > 0.0 ? rounding::up(length) : 0.0;
+    valid_depths_ = 0;
     use_full_tape();
 }
 
@@ -68,7 +69,9 @@ Interval RayFunction::prune(std::size_t depth, double a, double b, TraceCounters
         pruned_.resize(SegmentStack::max_depth);
         tape_at_.resize(SegmentStack::max_depth);
     }
-    const Tape& parent = depth == 0 ? *tape_ : *tape_at_[depth - 1];
+    // The parent is the tape of the enclosing segment, pruned at depth − 1
+    // on this ray; without one (a first prune deeper than 0) the full tape.
+    const Tape& parent = depth == 0 || depth > valid_depths_ ? *tape_ : *tape_at_[depth - 1];
     const Interval f = pruner_->evaluate(parent, segment_box(a, b));
     // Where no min or max has a winner the pruned tape would be the parent.
     if (pruner_->any_choice()) {
@@ -79,6 +82,7 @@ Interval RayFunction::prune(std::size_t depth, double a, double b, TraceCounters
         tape_at_[depth] = &parent;
         if (bound_ != &parent) use_tape(parent);  // else the evaluators already walk it
     }
+    valid_depths_ = depth + 1;  // deeper entries belonged to other segments
     return f;
 }
 

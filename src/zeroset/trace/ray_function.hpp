@@ -29,6 +29,9 @@ namespace zeroset {
 class RayFunction {
 public:
     explicit RayFunction(const Tape& tape);
+    // It points into itself (the tape in use at each depth).
+    RayFunction(const RayFunction&) = delete;
+    RayFunction& operator=(const RayFunction&) = delete;
 
     /// Starts a new ray on the full tape.
     void set_ray(const Ray& ray);
@@ -97,6 +100,7 @@ private:
     std::optional<TapePruner> pruner_;  // made on the first prune()
     std::vector<Tape> pruned_;          // pruned_[d]: the tape pruned at depth d, if any
     std::vector<const Tape*> tape_at_;  // the tape in use at depth d: pruned_[d] or its parent's
+    std::size_t valid_depths_ = 0;      // tape_at_[d] belongs to this ray's current segments for d < this
     const Tape* bound_;                 // the tape the evaluators walk
     bool can_prune_;
 };

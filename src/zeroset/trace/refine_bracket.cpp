@@ -34,7 +34,10 @@ bool closes_in_on_a_pole(RayFunction& h, double a, double b, TraceCounters& coun
     }
     // … and compare |H| there with |H| a little way off on either side. The
     // probes may leave the span, and the object's domain: a NaN there is not
-    // the surface's, so it is not recorded.
+    // the surface's, so it is not recorded. They also leave the box a pruned
+    // tape is valid in, so they use the full tape (the caller's next prune
+    // binds its own again).
+    h.use_full_tape();
     const double w = 16.0 * (b - a);
     const std::uint64_t nans = counters.nan_evaluations;
     const double off = std::max(std::abs(h.value(a - w, counters)), std::abs(h.value(b + w, counters)));
