@@ -163,6 +163,11 @@ TEST(Slice, ImpossibleSettingsAreErrors) {
     settings.plane = {};
     settings.plane.axis = 3;
     EXPECT_THROW(slice(tape, settings), RenderError);
+    settings.plane = {};
+    settings.plane.max = 1e30;  // the edge of what float samples well
+    EXPECT_NO_THROW(slice(tape, settings));
+    settings.plane.max = 2e30;
+    EXPECT_THROW(slice(tape, settings), RenderError);
 }
 
 }  // namespace

@@ -38,6 +38,10 @@ void check_settings(const SliceSettings& s) {
     if (!(std::isfinite(p.at) && std::isfinite(p.min) && std::isfinite(p.max)))
         throw RenderError("the slice's plane and square must be finite");
     if (!(p.min < p.max)) throw RenderError("the slice's square is empty (need min < max)");
+    // Pixels are sampled in float: the square must lie well inside its range.
+    constexpr double float_reach = 1e30;
+    if (std::abs(p.at) > float_reach || std::abs(p.min) > float_reach || std::abs(p.max) > float_reach)
+        throw RenderError("the slice's plane and square must lie within ±1e30 (pixels are sampled in float)");
 }
 
 /// Where the pixel centres lie in space. Coordinates are computed once, in
