@@ -46,7 +46,6 @@ public:
     /// … and the tape pruned to the box of the last evaluate().
     void simplify(Tape& out);
 
-
 private:
     enum class Choice : std::uint8_t { Both, Left, Right };
 
