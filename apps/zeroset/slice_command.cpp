@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 #include "ray_options.hpp"
+#include "zeroset/expr/batch_lanes.hpp"
 #include "zeroset/io/image_writer.hpp"
 #include "zeroset/render/slice_image.hpp"
 #include "zeroset/scene/file_text.hpp"
@@ -140,12 +141,13 @@ int slice_command(const std::vector<std::string>& args) {
         const double pixels = static_cast<double>(field.size) * field.size;
         std::fprintf(stderr,
                      "zeroset: wrote %s (%dx%d) in %.1f ms — %llu tiles by interval, %.1f%% of pixels decided there; "
-                     "%llu leaf batches of %.1f clauses on average (full tape %zu clauses, %u slots; leaves at most %u slots)\n",
+                     "%llu leaf batches of %.1f clauses on average (full tape %zu clauses, %u slots; leaves at most %u "
+                     "slots; %s lanes)\n",
                      output.string().c_str(), field.size, field.size, seconds * 1e3,
                      static_cast<unsigned long long>(s.tiles), 100.0 * static_cast<double>(s.pixels_decided) / pixels,
                      static_cast<unsigned long long>(s.leaf_batches),
                      s.leaf_batches ? static_cast<double>(s.leaf_clauses) / static_cast<double>(s.leaf_batches) : 0.0,
-                     s.full_clauses, s.full_slots, s.max_leaf_slots);
+                     s.full_clauses, s.full_slots, s.max_leaf_slots, batch_simd_target().c_str());
     }
     return 0;
 }

@@ -29,6 +29,7 @@ TEST_F(SliceCli, ProsperoIsBlackTextOnWhite) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("wrote p.png (128x128)"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("full tape 6360 clauses"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" lanes)"), std::string::npos) << "names the SIMD level: " << r.err;
     const zeroset::Image image = zeroset::read_png(dir_ / "p.png");
     ASSERT_EQ(image.width, 128);
     const int black = black_pixels(image);
