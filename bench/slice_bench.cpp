@@ -37,6 +37,8 @@ void slice_model(benchmark::State& state, const std::string& model, bool every_p
         benchmark::DoNotOptimize(field.values.data());
     }
     state.counters["tiles"] = static_cast<double>(stats.tiles);
+    state.counters["tiles_decided"] = static_cast<double>(stats.tiles_decided);
+    state.counters["interval_clauses"] = static_cast<double>(stats.interval_clauses);
     state.counters["leaf_batches"] = static_cast<double>(stats.leaf_batches);
     state.counters["clauses_per_leaf"] =
         stats.leaf_batches ? static_cast<double>(stats.leaf_clauses) / static_cast<double>(stats.leaf_batches) : 0.0;

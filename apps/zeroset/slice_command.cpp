@@ -86,13 +86,12 @@ SlicePlane plane_from(const Options& options, const std::optional<Box3>& bounds)
     SlicePlane plane;
     if (const auto axis = options.value("--axis")) plane.axis = axis_from_name(*axis);
     if (bounds) {
-        const auto coordinate = [](const Vec3d& v, int i) { return i == 0 ? v.x : i == 1 ? v.y : v.z; };
-        plane.at = 0.5 * (coordinate(bounds->lo, plane.axis) + coordinate(bounds->hi, plane.axis));
+        plane.at = 0.5 * (bounds->lo[plane.axis] + bounds->hi[plane.axis]);
         double lo = INFINITY, hi = -INFINITY;
         for (int i = 0; i < 3; ++i) {
             if (i == plane.axis) continue;
-            lo = std::min(lo, coordinate(bounds->lo, i));
-            hi = std::max(hi, coordinate(bounds->hi, i));
+            lo = std::min(lo, bounds->lo[i]);
+            hi = std::max(hi, bounds->hi[i]);
         }
         plane.min = lo;
         plane.max = hi;

@@ -40,14 +40,21 @@ public:
     /// prune() in two steps, for callers that may not need the pruned tape:
     /// f over the box, recording which side of each min and max wins there…
     Interval evaluate(const Tape& source, const Box3& box);
-    /// … whether any min or max has a side that wins over the whole box (if
-    /// none does, the pruned tape would be the source itself) …
-    [[nodiscard]] bool any_choice() const { return choices_made_ > 0; }
-    /// … and the tape pruned to the box of the last evaluate().
-    void simplify(Tape& out);
+    /// … and the tape to walk in the box of the last evaluate(): `out`,
+    /// filled with the pruned tape, or — when no min or max has a side that
+    /// wins over the whole box, so pruning would keep everything — that
+    /// evaluation's source itself, with `out` left as it was.
+    const Tape& simplified(Tape& out) {
+        if (choices_made_ == 0) return *source_;
+        simplify(out);
+        return out;
+    }
 
 private:
     enum class Choice : std::uint8_t { Both, Left, Right };
+
+    /// Writes the tape pruned to the box of the last evaluate() into `out`.
+    void simplify(Tape& out);
 
     /// The value `v` is over the box: the winner of a min or max that has one.
     [[nodiscard]] ValueId resolve(ValueId v) const {

@@ -13,6 +13,7 @@
 #include <limits>
 #include <span>
 #include <thread>
+#include <utility>
 
 #include "zeroset/expr/batch_evaluator.hpp"
 #include "zeroset/expr/tape_pruner.hpp"
@@ -27,7 +28,9 @@ namespace {
 // as their intervals cost about what they save.
 constexpr int leaf_size = 16;
 constexpr std::size_t leaf_pixels = static_cast<std::size_t>(leaf_size) * leaf_size;
-constexpr int max_depth = 16;  // more than the halvings from any task's tile (≤ 2^16 pixels) to a leaf
+constexpr int max_depth = 16;
+/// The corners of a tile's four sub-tiles, in units of their side.
+constexpr std::array<std::pair<int, int>, 4> quadrants{{{0, 0}, {1, 0}, {0, 1}, {1, 1}}};  // more than the halvings from any task's tile (≤ 2^16 pixels) to a leaf
 
 void check_settings(const SliceSettings& s) {
     require_in_range(s.size, 1, max_image_side, "size");
@@ -109,11 +112,7 @@ public:
         ++stats.tiles;
         stats.interval_clauses += parent.clauses().size();
         const bool undefined = f.is_empty();
-        if (every_pixel_ || !(f.lo > 0.0 || f.hi < 0.0 || undefined)) {
-            if (!pruner_.any_choice()) return &parent;
-            pruner_.simplify(pruned);
-            return &pruned;
-        }
+        if (every_pixel_ || !(f.lo > 0.0 || f.hi < 0.0 || undefined)) return &pruner_.simplified(pruned);
         const float value = undefined ? std::numeric_limits<float>::quiet_NaN() : decided_value(f);
         for (int y = y0; y < y1; ++y) std::fill(row(y) + x0, row(y) + x1, value);
         ++stats.tiles_decided;
@@ -131,7 +130,7 @@ public:
             return;
         }
         const int half = side / 2;
-        for (const auto& [dx, dy] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}})
+        for (const auto& [dx, dy] : quadrants)
             descend(x0 + dx * half, y0 + dy * half, half, *tape, depth + 1);
     }
 
@@ -237,7 +236,7 @@ SliceField slice(const Tape& tape, const SliceSettings& settings) {
         const int half = side / 2;
         for (std::size_t i = 0; i < tasks.size(); ++i) {
             if (!tile_tapes[i]) continue;
-            for (const auto& [dx, dy] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}})
+            for (const auto& [dx, dy] : quadrants)
                 below.push_back({tasks[i].x0 + dx * half, tasks[i].y0 + dy * half, tile_tapes[i]});
         }
         tasks = std::move(below);

@@ -73,15 +73,11 @@ Interval RayFunction::prune(std::size_t depth, double a, double b, TraceCounters
     // on this ray; without one (a first prune deeper than 0) the full tape.
     const Tape& parent = depth == 0 || depth > valid_depths_ ? *tape_ : *tape_at_[depth - 1];
     const Interval f = pruner_->evaluate(parent, segment_box(a, b));
-    // Where no min or max has a winner the pruned tape would be the parent.
-    if (pruner_->any_choice()) {
-        pruner_->simplify(pruned_[depth]);
-        tape_at_[depth] = &pruned_[depth];
-        use_tape(pruned_[depth]);
-    } else {
-        tape_at_[depth] = &parent;
-        if (bound_ != &parent) use_tape(parent);  // else the evaluators already walk it
-    }
+    const Tape& tape = pruner_->simplified(pruned_[depth]);
+    tape_at_[depth] = &tape;
+    // A tape rewritten in place has new constants; the parent kept as it is
+    // may be the one the evaluators already walk.
+    if (&tape == &pruned_[depth] || bound_ != &tape) use_tape(tape);
     valid_depths_ = depth + 1;  // deeper entries belonged to other segments
     return f;
 }
