@@ -28,7 +28,7 @@ TEST_F(SliceCli, ProsperoIsBlackTextOnWhite) {
     const Outcome r = run("slice '" ZEROSET_MODELS_DIR "/prospero.vm' --size 128 -o p.png");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("wrote p.png (128x128)"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("full tape 6360 clauses"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("full tape 5728 clauses"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(" lanes)"), std::string::npos) << "names the SIMD level: " << r.err;
     const zeroset::Image image = zeroset::read_png(dir_ / "p.png");
     ASSERT_EQ(image.width, 128);

@@ -55,6 +55,7 @@ std::vector<Case> cases() {
         {"atan2 over x < 0", atan2(L1, L2), false},
         {"floor", floor(2.0 * L1)},
         {"hypot", hypot(P, L1)},
+        {"log-sum-exp", log_sum_exp(3.0 * L1, L2)},
         {"min", min(L1, L2), false},
         {"max", max(L1, L2), false},
         {"blend", 1.0 - exp(-square(X - 0.4) - square(Y) - square(Z)) - exp(-square(X + 0.4) - square(Y) - square(Z))},

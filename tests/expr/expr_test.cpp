@@ -1,6 +1,8 @@
 // Expr: hash-consing, canonical order of commutative ops, constant folding and
 // the builders' small simplifications.
 #include "zeroset/expr/expr.hpp"
+#include "zeroset/expr/evaluator.hpp"
+#include "zeroset/expr/tape.hpp"
 
 #include <gtest/gtest.h>
 
@@ -37,8 +39,8 @@ TEST(Expr, CommutativeOpsShareANode) {
 TEST(Expr, SharedStructureIsCountedOnce) {
     const Expr r = sqrt(square(X) + square(Y));
     const Expr f = r * r + sin(r);
-    // Nodes: x, y, x², y², x²+y², r, r·r, sin r, sum.
-    EXPECT_EQ(f.node_count(), 9u);
+    // Nodes: x, y, r (one hypot), r·r, sin r, sum.
+    EXPECT_EQ(f.node_count(), 6u);
     EXPECT_EQ(X.node_count(), 1u);
 }
 
@@ -110,6 +112,34 @@ TEST(Expr, OperandsAndPrinting) {
     EXPECT_EQ(ceil(X).to_string(), "-floor(-x)");
     EXPECT_EQ(atan(X).to_string(), "atan(x)");
     EXPECT_EQ(hypot(X, Y).id(), hypot(Y, X).id());  // commutative: one node
+}
+
+/// ln of a sum of exps is one log-sum-exp op (tight enclosures, no
+/// overflow); a positive constant term c counts as e^ln c.
+TEST(Expr, LogOfExpSumIsLogSumExp) {
+    const Expr two = log(exp(X) + exp(Y));
+    EXPECT_EQ(two.op(), Op::LogSumExp);
+    EXPECT_EQ(two.id(), log_sum_exp(Y, X).id());
+    const Expr three = log(exp(X) + (exp(2.0 * Y) + exp(Z)));
+    EXPECT_EQ(Tape(three).clauses().size(), 3u);  // 2y and two log-sum-exps
+    const Expr softplus = log(1.0 + exp(X));
+    ASSERT_EQ(softplus.op(), Op::LogSumExp);
+    EXPECT_NEAR(Evaluator<double>(Tape(softplus))(0.3, 0, 0), std::log1p(std::exp(0.3)), 1e-15);
+    EXPECT_EQ(log(exp(X) + Y).op(), Op::Log);            // a term that is no exp
+    EXPECT_EQ(log(exp(X) + Expr(-1.0)).op(), Op::Log);  // ln of a negative constant is no exponent
+    EXPECT_EQ(log(exp(X)).op(), Op::Log);               // no sum
+    // Where exp overflows the written-out form is ∞; the op is finite.
+    EXPECT_NEAR(Evaluator<double>(Tape(two))(1000.0, 999.0, 0), 1000.0 + std::log1p(std::exp(-1.0)), 1e-12);
+}
+
+/// √ of a sum of squares is nested hypots: the same values, and slopes
+/// bounded at the centre of a norm.
+TEST(Expr, SqrtOfSquareSumIsHypot) {
+    const Expr norm = sqrt(square(X) + square(Y) + square(Z - 1.0));
+    EXPECT_EQ(norm.op(), Op::Hypot);
+    EXPECT_NEAR(Evaluator<double>(Tape(norm))(0.3, -0.4, 2.2), std::sqrt(0.09 + 0.16 + 1.44), 1e-15);
+    EXPECT_EQ(sqrt(square(X) + Y).op(), Op::Sqrt);  // a term that is no square
+    EXPECT_EQ(sqrt(square(X)).op(), Op::Sqrt);      // no sum
 }
 
 TEST(Expr, OpTableNames) {

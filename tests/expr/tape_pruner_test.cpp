@@ -36,9 +36,9 @@ TEST(TapePruner, UnionOfDistantBallsKeepsOnlyTheNearOne) {
     const Box3 near_left{{-6, -1, -1}, {-4, 1, 1}};
     const Interval value = pruner.prune(full, near_left, pruned);
     EXPECT_LE(value.lo, 0.0);
-    // Each ball is 6 clauses, y² and z² are shared (2), plus the min: 15 → 8.
-    EXPECT_EQ(full.clauses().size(), 15u);
-    EXPECT_EQ(pruned.clauses().size(), 8u);
+    // Each ball is 4 clauses (x − c, two hypots, − r), plus the min: 9 → 4.
+    EXPECT_EQ(full.clauses().size(), 9u);
+    EXPECT_EQ(pruned.clauses().size(), 4u);
     for (const Clause& c : pruned.clauses()) EXPECT_NE(c.op, Op::Min);
     // Renumbered: x, y, z, the live constants (-5 and 1), and reused working slots.
     EXPECT_EQ(pruned.constants().size(), 2u);

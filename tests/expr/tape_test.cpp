@@ -99,7 +99,7 @@ TEST(Tape, OneClausePerDistinctNonLeafNode) {
     const Expr f = max(r - 1.0, -(r - 0.5)) + sin(r) * r;  // r is shared four times
     const Tape tape(f);
     EXPECT_EQ(tape.clauses().size(), non_leaf_count(f));
-    EXPECT_EQ(tape.clauses().size(), 13u);
+    EXPECT_EQ(tape.clauses().size(), 9u);  // r is two hypots
     check_tape(tape);
     Evaluator<double> eval(tape);
     for (const double x : {-1.0, 0.3, 2.0}) EXPECT_DOUBLE_EQ(eval(x, 0.5, -0.25), reference(f, x, 0.5, -0.25));

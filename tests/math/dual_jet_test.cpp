@@ -78,6 +78,10 @@ std::vector<Rule> rules() {
                      v / ((0.25 + v * v) * (0.25 + v * v)), -1.5, 0.0, 2.0),
         ZEROSET_RULE("hypot(u, 0.7)", hypot(u, N(0.7)), std::hypot(v, 0.7), v / std::hypot(v, 0.7),
                      0.49 / std::pow(std::hypot(v, 0.7), 3), -1.5, 0.0, 2.0),
+        // ln(eᵘ + e^0.4): slope σ(u − 0.4), curvature σ(1 − σ).
+        ZEROSET_RULE("log_sum_exp(u, 0.4)", log_sum_exp(u, N(0.4)), std::log(exp(v) + exp(0.4)),
+                     1 / (1 + exp(0.4 - v)), exp(0.4 - v) / ((1 + exp(0.4 - v)) * (1 + exp(0.4 - v))), -30.0, -1.5,
+                     0.4, 2.0, 30.0),
         ZEROSET_RULE("floor", floor(u), std::floor(v), 0.0, 0.0, -1.5, 0.3, 2.7),
         ZEROSET_RULE("u*u", u * u, v * v, 2 * v, 2.0, -1.5, 0.0, 0.7),
         ZEROSET_RULE("1/u", N(1.0) / u, 1 / v, -1 / (v * v), 2 / (v * v * v), -1.5, 0.5),

@@ -315,6 +315,18 @@ bool MpfiRayFunction::apply(std::size_t i, mpfi_srcptr t, bool with_derivative) 
                 }
             }
             return true;
+        case Op::LogSumExp:  // ln(eᵃ + eᵇ); MPFR's exponent range does not overflow here
+            mpfi_exp(t0, a);
+            mpfi_exp(t1, b);
+            mpfi_add(t2, t0, t1);
+            mpfi_log(v, t2);
+            if (with_derivative) {  // (eᵃ a′ + eᵇ b′)/(eᵃ + eᵇ)
+                mpfi_mul(t0, t0, da);
+                mpfi_mul(t1, t1, db);
+                mpfi_add(t0, t0, t1);
+                mpfi_div(s, t0, t2);
+            }
+            return true;
         case Op::Powi:
         case Op::Pow: {
             long n = node.n;

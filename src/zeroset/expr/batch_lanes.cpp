@@ -70,6 +70,39 @@ private:
     static void per_lane(const Clause& c, F* HWY_RESTRICT out, const F* HWY_RESTRICT a, const F* HWY_RESTRICT b) {
         for (std::size_t i = 0; i < batch_lanes; ++i) out[i] = apply_op<F>(c.op, a[i], b[i], static_cast<int>(c.b));
     }
+    /// max(a, b) + ln(1 + e^−|a−b|) as scalar log_sum_exp; Exp's argument is
+    /// ≤ 0 and Log1p's in [0, 1], inside both ranges. Lanes where a − b is
+    /// not finite (an operand NaN or infinite, or the difference overflows)
+    /// take the scalar function.
+    static void log_sum_exp(F* HWY_RESTRICT out, const F* HWY_RESTRICT a, const F* HWY_RESTRICT b) {
+        const D d;
+        for (std::size_t i = 0; i < batch_lanes; i += hn::Lanes(d)) {
+            const V x = hn::LoadU(d, a + i), y = hn::LoadU(d, b + i);
+            const V difference = hn::Sub(x, y);
+            const V tail = hn::Log1p(d, hn::Exp(d, hn::Neg(hn::Abs(difference))));
+            hn::StoreU(hn::Add(hn::Max(x, y), tail), d, out + i);
+            if (hn::AllTrue(d, hn::IsFinite(difference))) continue;
+            for (std::size_t j = i; j < i + hn::Lanes(d); ++j)
+                if (!std::isfinite(a[j] - b[j])) out[j] = zeroset::log_sum_exp(a[j], b[j]);
+        }
+    }
+    /// √(a² + b²) where a² + b² neither overflows nor loses bits to underflow
+    /// (or a = b = 0); other lanes (and NaN, ±∞) take std::hypot.
+    static void hypot(F* HWY_RESTRICT out, const F* HWY_RESTRICT a, const F* HWY_RESTRICT b) {
+        const D d;
+        const V tiny = hn::Set(d, sizeof(F) == 4 ? F(0x1p-100) : F(0x1p-900));
+        const V huge = hn::Set(d, std::numeric_limits<F>::max());
+        const V zero = hn::Zero(d);
+        for (std::size_t i = 0; i < batch_lanes; i += hn::Lanes(d)) {
+            const V x = hn::LoadU(d, a + i), y = hn::LoadU(d, b + i);
+            const V sum = hn::MulAdd(x, x, hn::Mul(y, y));
+            hn::StoreU(hn::Sqrt(sum), d, out + i);
+            const auto both_zero = hn::And(hn::Eq(x, zero), hn::Eq(y, zero));
+            const auto in_range = hn::Or(hn::And(hn::Ge(sum, tiny), hn::Le(sum, huge)), both_zero);
+            if (hn::AllTrue(d, in_range)) continue;
+            for (std::size_t j = i; j < i + hn::Lanes(d); ++j) out[j] = std::hypot(a[j], b[j]);
+        }
+    }
     /// a^n by repeated squaring, the same products as scalar powi.
     static V powi(D d, V a, int n) {
         const bool invert = n < 0;
@@ -125,7 +158,9 @@ private:
             case Op::Atan:
                 ranged(out, a, -max_finite, max_finite, [](D d, V x) { return hn::Atan(d, x); }, [](F x) { return std::atan(x); });
                 break;
-            case Op::Tan: case Op::Atan2: case Op::Hypot: case Op::Pow: per_lane(c, out, a, b); break;
+            case Op::LogSumExp: log_sum_exp(out, a, b); break;
+            case Op::Hypot: hypot(out, a, b); break;
+            case Op::Tan: case Op::Atan2: case Op::Pow: per_lane(c, out, a, b); break;
         }
     }
 };

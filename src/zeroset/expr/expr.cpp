@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
+#include <cmath>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 #include <unordered_set>
@@ -120,15 +122,71 @@ Expr var_x() { return Expr::intern(Op::VarX, 0.0, 0, nullptr, nullptr); }
 Expr var_y() { return Expr::intern(Op::VarY, 0.0, 0, nullptr, nullptr); }
 Expr var_z() { return Expr::intern(Op::VarZ, 0.0, 0, nullptr, nullptr); }
 
+namespace {
+
+/// How a sum's terms become the operands of a two-argument op that
+/// replaces f(Σ terms): Square → its operand (for hypot), Exp → its
+/// exponent and a positive constant c → ln c (for log-sum-exp).
+enum class SumPattern { SquareTerms, ExpTerms };
+
+std::optional<Expr> term_operand(const Expr& term, SumPattern pattern) {
+    if (pattern == SumPattern::SquareTerms) {
+        if (term.op() == Op::Square) return term.operand(0);
+    } else {
+        if (term.op() == Op::Exp) return term.operand(0);
+        if (term.is_constant() && term.value() > 0.0) return Expr(std::log(term.value()));
+    }
+    return std::nullopt;
+}
+
+/// True when `sum` is an Add tree of at most `max_terms` terms that all
+/// match the pattern (checked without recursion: a long chain of adds that
+/// does not match costs at most max_terms steps).
+bool matches(const Expr& sum, SumPattern pattern) {
+    constexpr std::size_t max_terms = 64;
+    if (sum.op() != Op::Add) return false;
+    std::vector<Expr> pending{sum};
+    std::size_t terms = 0;
+    while (!pending.empty()) {
+        const Expr e = pending.back();
+        pending.pop_back();
+        if (++terms > 2 * max_terms) return false;  // adds and terms counted together
+        if (e.op() == Op::Add) {
+            pending.push_back(e.operand(0));
+            pending.push_back(e.operand(1));
+        } else if (!term_operand(e, pattern)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/// The op over the sum's tree, add for add: the nesting follows the sum as
+/// it was built, so the same sum always gives the same expression.
+Expr fold_sum(const Expr& sum, SumPattern pattern, Op op) {
+    if (sum.op() != Op::Add) return *term_operand(sum, pattern);
+    return Expr::make(op, fold_sum(sum.operand(0), pattern, op), fold_sum(sum.operand(1), pattern, op));
+}
+
+}  // namespace
+
 Expr Expr::make(Op op, const Expr& a, const Expr& b, int n) {
     const int arity = op_arity(op);
+    // Two patterns of written-out models become ops with tighter enclosures:
+    // ln(Σ eᵘⁱ) is nested log-sum-exps of the uᵢ (no overflow; its interval
+    // runs corner to corner), √(Σ uᵢ²) nested hypots (the same values to an
+    // ulp, and slopes uᵢ/h within [−1, 1] where sqrt's 1/(2√s) is unbounded:
+    // a norm over a box around its centre keeps L = 1).
+    if (op == Op::Log && matches(a, SumPattern::ExpTerms)) return fold_sum(a, SumPattern::ExpTerms, Op::LogSumExp);
+    if (op == Op::Sqrt && matches(a, SumPattern::SquareTerms)) return fold_sum(a, SumPattern::SquareTerms, Op::Hypot);
     // Constant folding: an op over constants is the constant it evaluates to.
     if (arity >= 1 && a.is_constant() && (arity < 2 || b.is_constant())) {
         return Expr(apply_op<double>(op, a.value(), arity == 2 ? b.value() : 0.0, n));
     }
     // Operand order does not matter for these: keep one canonical order so
     // that a + b and b + a share a node.
-    const bool commutative = op == Op::Add || op == Op::Mul || op == Op::Min || op == Op::Max || op == Op::Hypot;
+    const bool commutative = op == Op::Add || op == Op::Mul || op == Op::Min || op == Op::Max || op == Op::Hypot ||
+                             op == Op::LogSumExp;
     if (commutative && std::less<const void*>{}(b.id(), a.id())) return intern(op, 0.0, n, &b, &a);
     return intern(op, 0.0, n, &a, arity == 2 ? &b : nullptr);
 }
@@ -210,6 +268,7 @@ Expr atan(const Expr& a) { return Expr::make(Op::Atan, a); }
 Expr atan2(const Expr& y, const Expr& x) { return Expr::make(Op::Atan2, y, x); }
 Expr floor(const Expr& a) { return Expr::make(Op::Floor, a); }
 Expr hypot(const Expr& a, const Expr& b) { return Expr::make(Op::Hypot, a, b); }
+Expr log_sum_exp(const Expr& a, const Expr& b) { return Expr::make(Op::LogSumExp, a, b); }
 Expr ceil(const Expr& a) { return -floor(-a); }
 Expr powi(const Expr& a, int n) {
     if (n == 0) return Expr(1.0);

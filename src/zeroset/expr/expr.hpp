@@ -114,6 +114,11 @@ Expr atan2(const Expr& y, const Expr& x);
 Expr floor(const Expr& a);
 /// √(a² + b²), whose derivatives stay bounded where both are 0.
 Expr hypot(const Expr& a, const Expr& b);
+/// ln(eᵃ + eᵇ) as one op, the smooth maximum of soft blends. log() of a sum
+/// whose terms are all exps (or positive constants) builds it by itself, so
+/// models written out as ln(exp(a) + exp(b)) get its tight enclosures and
+/// lose the overflow of eᵃ.
+Expr log_sum_exp(const Expr& a, const Expr& b);
 /// ⌈a⌉ = −⌊−a⌋ (no op of its own).
 Expr ceil(const Expr& a);
 /// a^n for an integer n (square for n = 2).

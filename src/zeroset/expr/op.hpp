@@ -35,6 +35,7 @@
     X(Atan2, "atan2", 2, atan2(a, b))              \
     X(Floor, "floor", 1, floor(a))                 \
     X(Hypot, "hypot", 2, hypot(a, b))              \
+    X(LogSumExp, "log-sum-exp", 2, log_sum_exp(a, b)) \
     X(Powi, "powi", 1, powi(a, n))                 \
     X(Pow, "pow", 2, pow(a, b))                    \
     X(Min, "min", 2, min(a, b))                    \

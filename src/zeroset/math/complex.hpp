@@ -84,6 +84,15 @@ inline Complex hypot(Complex a, Complex b) { return sqrt(square(a) + square(b));
 inline Complex hypot_slope(Complex a, Complex h) { return a / h; }
 inline Complex hypot_curvature(Complex n, Complex h) { return n / h; }
 
+/// log(eᵃ + eᵇ) on the principal branch, with both exponents shifted by the
+/// larger real part m (e^−m is real and positive, so the branch is unchanged).
+inline Complex log_sum_exp(Complex a, Complex b) {
+    const Complex m(std::max(a.re, b.re));
+    if (!std::isfinite(m.re)) return log(exp(a) + exp(b));
+    return m + log(exp(a - m) + exp(b - m));
+}
+inline Complex log_sum_exp_weight(Complex a, Complex b) { return Complex(1.0) / (Complex(1.0) + exp(b - a)); }
+
 /// a^n by repeated squaring: exact branch-free integer powers.
 inline Complex powi(Complex a, int n) {
     if (n < 0) return Complex(1.0) / powi(a, -n);

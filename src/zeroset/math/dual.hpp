@@ -90,6 +90,11 @@ template <class T> Dual<T> hypot(const Dual<T>& a, const Dual<T>& b) {
     const T h = hypot(a.v, b.v);
     return {h, a.g * hypot_slope(a.v, h) + b.g * hypot_slope(b.v, h)};
 }
+/// ∇ln(eᵃ + eᵇ) = wₐ ∇a + w_b ∇b with the weights wₐ = 1/(1 + e^(b−a)) and
+/// w_b = 1 − wₐ, each enclosed in [0, 1].
+template <class T> Dual<T> log_sum_exp(const Dual<T>& a, const Dual<T>& b) {
+    return {log_sum_exp(a.v, b.v), a.g * log_sum_exp_weight(a.v, b.v) + b.g * log_sum_exp_weight(b.v, a.v)};
+}
 /// floor′ = 0 between the integers; unbounded where an integer may be crossed.
 template <class T> Dual<T> floor(const Dual<T>& a) {
     const T f = floor(a.v);

@@ -239,6 +239,37 @@ inline bool atan2_may_jump(Interval y, Interval x) {
     return !y.is_empty() && !x.is_empty() && y.contains(0.0) && x.lo <= 0.0;
 }
 
+namespace detail {
+/// An enclosure of ln(eᵃ + eᵇ) at one point, by interval ops on
+/// max(a, b) + ln(1 + e^−|a−b|) (glibc's log1p is within 2 ulps).
+inline Interval log_sum_exp_at(double a, double b) {
+    const double m = max(a, b);
+    if (m != m) return Interval::empty();
+    if (std::isinf(m)) return Interval(m);
+    const Interval e = exp(-abs(Interval(a) - Interval(b)));
+    const Interval tail{std::max(0.0, rounding::down2(std::log1p(e.lo))), rounding::up2(std::log1p(e.hi))};
+    return Interval(m) + tail;
+}
+}  // namespace detail
+
+/// ln(eᵃ + eᵇ) is increasing in both operands, so its range runs from the
+/// lower corner to the upper one: tight, and finite wherever a and b are —
+/// where ln(exp(a) + exp(b)) written out overflows to [·, ∞] and its
+/// derivative's enclosure (e^a ∇a + e^b ∇b)/(e^a + e^b) explodes.
+inline Interval log_sum_exp(Interval a, Interval b) {
+    if (a.is_empty() || b.is_empty()) return Interval::empty();
+    return {detail::log_sum_exp_at(a.lo, b.lo).lo, detail::log_sum_exp_at(a.hi, b.hi).hi};
+}
+/// The weight 1/(1 + e^(b−a)) of a in the derivative, decreasing in b − a:
+/// an enclosure within [0, 1] (all of it where b − a is ∞ − ∞).
+inline Interval log_sum_exp_weight(Interval a, Interval b) {
+    if (a.is_empty() || b.is_empty()) return Interval::empty();
+    const Interval x = b - a;
+    if (x.lo != x.lo || x.hi != x.hi) return {0.0, 1.0};
+    const Interval w = 1.0 / (1.0 + exp(x));
+    return {std::max(0.0, w.lo), std::min(1.0, w.hi)};
+}
+
 /// floor is exact in floating point and non-decreasing.
 inline Interval floor(Interval a) {
     if (a.is_empty()) return a;

@@ -111,6 +111,13 @@ template <class T> Jet<T> hypot(const Jet<T>& a, const Jet<T>& b) {
     const T turn = alpha * b.d1 - beta * a.d1;
     return {h, alpha * a.d1 + beta * b.d1, hypot_curvature(square(turn), h) + alpha * a.d2 + beta * b.d2};
 }
+/// H = ln(e^A + e^B) with weights α = 1/(1 + e^(B−A)), β = 1 − α:
+/// H′ = α A′ + β B′ and H″ = α A″ + β B″ + α β (A′ − B′)².
+template <class T> Jet<T> log_sum_exp(const Jet<T>& a, const Jet<T>& b) {
+    const T alpha = log_sum_exp_weight(a.v, b.v), beta = log_sum_exp_weight(b.v, a.v);
+    return {log_sum_exp(a.v, b.v), alpha * a.d1 + beta * b.d1,
+            alpha * a.d2 + beta * b.d2 + alpha * beta * square(a.d1 - b.d1)};
+}
 template <class T> Jet<T> floor(const Jet<T>& a) {
     const T f = floor(a.v);
     if (floor_may_jump(a.v)) return detail::across_jump(f, a, a);

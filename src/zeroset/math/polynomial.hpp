@@ -11,7 +11,7 @@
 // degree). A result of higher degree is never written: it becomes Overflow.
 //
 // Ops outside polynomial arithmetic (division by a non-constant, sqrt, abs,
-// exp, log, sin, cos, tan, atan, atan2, floor, hypot, a non-integral or variable
+// exp, log, sin, cos, tan, atan, atan2, floor, hypot, log-sum-exp, a non-integral or variable
 // exponent, min, max, a negative power) give NotPolynomial when an operand depends on t. On
 // constants they are ordinary arithmetic: sqrt(2) as a radius is still a
 // constant. Invalid states are sticky through every later op.
@@ -219,6 +219,9 @@ inline Polynomial atan(const Polynomial& a) { return detail::on_constant(a, [](d
 inline Polynomial floor(const Polynomial& a) { return detail::on_constant(a, [](double v) { return floor(v); }); }
 inline Polynomial hypot(const Polynomial& a, const Polynomial& b) {
     return detail::on_constants(a, b, [](double u, double v) { return hypot(u, v); });
+}
+inline Polynomial log_sum_exp(const Polynomial& a, const Polynomial& b) {
+    return detail::on_constants(a, b, [](double u, double v) { return log_sum_exp(u, v); });
 }
 inline Polynomial atan2(const Polynomial& y, const Polynomial& x) {
     return detail::on_constants(y, x, [](double u, double v) { return atan2(u, v); });

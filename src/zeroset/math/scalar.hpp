@@ -59,6 +59,22 @@ template <std::floating_point F> inline F max(F a, F b) {
     return a != a ? a : larger;
 }
 
+/// ln(eᵃ + eᵇ), the smooth maximum that soft blends are written with, as
+/// max(a, b) + ln(1 + e^−|a−b|): no overflow where eᵃ would. Its own op (the
+/// expression builder recognises ln of a sum of exps) so that its interval
+/// and derivative enclosures stay tight (see interval.hpp).
+template <std::floating_point F> inline F log_sum_exp(F a, F b) {
+    const F m = max(a, b);
+    if (m != m || std::isinf(m)) return m;  // NaN; +∞ wins; −∞ only when both are
+    return m + std::log1p(std::exp(-std::fabs(a - b)));
+}
+/// ∂ log_sum_exp(a, b)/∂a = 1/(1 + e^(b−a)), in [0, 1] (½ where a and b are
+/// the same infinity).
+template <std::floating_point F> inline F log_sum_exp_weight(F a, F b) {
+    const F x = b - a;
+    return x != x ? F(0.5) : F(1) / (F(1) + std::exp(x));
+}
+
 /// True when a ≤ b holds for every value the numbers stand for.
 template <std::floating_point F> inline bool certainly_le(F a, F b) { return a <= b; }
 /// The smallest number that stands for both (only reached by NaN for scalars).

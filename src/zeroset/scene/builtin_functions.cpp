@@ -119,6 +119,7 @@ const std::vector<Builtin>& table() {
         math("square", {"a"}, [](A a) { return square(a.number(0)); }),
         math("pow", {"a", "b"}, [](A a) { return pow(a.number(0), a.number(1)); }),
         math("hypot", {"a", "b"}, [](A a) { return hypot(a.number(0), a.number(1)); }),
+        math("log_sum_exp", {"a", "b"}, [](A a) { return log_sum_exp(a.number(0), a.number(1)); }),
         {"min", {{"a", N}, {"b", N}}, 2, true, [](A a) { return fold(a, min); }},
         {"max", {{"a", N}, {"b", N}}, 2, true, [](A a) { return fold(a, max); }},
         math("mod", {"a", "b"}, [](A a) { return mod(a.number(0), a.number(1)); }),
