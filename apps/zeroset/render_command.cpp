@@ -44,6 +44,11 @@ Options:
                       exact gradient, eq. 33), fd (forward differences, eq. 34)
                       or central (central differences); default: the object's,
                       else analytic (see docs/rendering.md#normals)
+  --partition P       spatial partitioning of every object's bounds: auto,
+                      none, lipschitz (Kalra-Barr octree) or vertex-sign
+                      (Bloomenthal's); default: the object's, else auto
+                      (lipschitz for the interval, lg and sphere methods on
+                      tapes of 64 clauses or more; see docs/methods.md)
   --max-evaluations N stop with an error once the render has spent N
                       evaluations of the surfaces (default: 16384 per camera
                       ray, at least 4194304; see docs/limits.md)
@@ -58,7 +63,7 @@ A progress bar is drawn on stderr when it is a terminal; a one-line summary
 
 int render_command(const std::vector<std::string>& args) {
     const Options options(args, {"-o", "--output", "--width", "--height", "--spp", "--threads", "--method",
-                                 "--solver", "--normals", "--max-evaluations"},
+                                 "--solver", "--normals", "--partition", "--max-evaluations"},
                           {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(render_usage, stdout);
@@ -91,6 +96,10 @@ int render_command(const std::vector<std::string>& args) {
     if (const auto name = options.value("--normals")) {
         settings.normals = normal_mode_from_name(*name);
         if (!settings.normals) throw UsageError("unknown normal mode '" + *name + "' (try zeroset render --help)");
+    }
+    if (const auto name = options.value("--partition")) {
+        settings.partition = partition_from_name(*name);
+        if (!settings.partition) throw UsageError("unknown partition '" + *name + "' (try zeroset render --help)");
     }
     settings.max_evaluations = options.count("--max-evaluations");
     validate(settings);

@@ -277,15 +277,21 @@ TEST(Renderer, NanSurfaceIsAnErrorUnderEveryMethod) {
     for (const Case& c : {Case{ball + nan, true}, Case{nan * var_x(), true}, Case{sqrt(var_x()) + ball, false}}) {
         for (const Method m : {Method::Auto, Method::Polynomial, Method::Interval, Method::Lg, Method::Sphere}) {
             if (m == Method::Polynomial && !c.polynomial) continue;
-            Scene scene;
-            Object o;
-            o.surface = c.f;
-            o.bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
-            o.method = m;
-            scene.nodes.push_back(make_object_node(o, "bad"));
-            const std::string error = render_error(scene, small());
-            EXPECT_NE(error.find("NaN"), std::string::npos)
-                << c.f.to_string() << " with " << method_name(m) << ": " << error;
+            // Partitioned too: cells where f is NaN throughout are kept, so rays still meet it.
+            const bool can_partition = m == Method::Interval || m == Method::Lg || m == Method::Sphere;
+            for (const Partition p : {Partition::None, Partition::Lipschitz}) {
+                if (p == Partition::Lipschitz && !can_partition) continue;
+                Scene scene;
+                Object o;
+                o.surface = c.f;
+                o.bounds = Bounds::make_box({{-2, -2, -2}, {2, 2, 2}});
+                o.method = m;
+                o.partition = p;
+                scene.nodes.push_back(make_object_node(o, "bad"));
+                const std::string error = render_error(scene, small());
+                EXPECT_NE(error.find("NaN"), std::string::npos) << c.f.to_string() << " with " << method_name(m)
+                                                                << ", partition " << partition_name(p) << ": " << error;
+            }
         }
     }
 }

@@ -44,15 +44,39 @@ LeafScratch::LeafScratch(const ImplicitLeaf& leaf)
       gradient(leaf.tape()),
       value(leaf.tape()) {}
 
+Partition resolve_partition(Partition asked, Method method, const Tape& tape) {
+    const bool bounds_cells = method == Method::Interval || method == Method::Lg || method == Method::Sphere;
+    if (asked == Partition::Auto)
+        return bounds_cells && tape.clauses().size() >= partition_min_clauses ? Partition::Lipschitz : Partition::None;
+    if (asked != Partition::None && !bounds_cells)
+        throw std::invalid_argument("partition " + std::string(partition_name(asked)) +
+                                    " needs the interval, lg or sphere method, not " +
+                                    std::string(method_name(method)));
+    return asked;
+}
+
+int octree_depth_for(int footprint_pixels) {
+    const int footprint = footprint_pixels > 0 ? footprint_pixels : 512;
+    const int depth = static_cast<int>(std::ceil(std::log2(std::max(1.0, footprint / 16.0))));
+    return std::clamp(depth, 2, 8);
+}
+
 ImplicitLeaf::ImplicitLeaf(std::size_t id, LeafDescription description)
     : id_(id),
       description_(std::move(description)),
       tape_(description_.surface),
       region_(tape_, description_.bounds),
       method_(resolve_method(description_.method, tape_)),
-      settings_(settings_for_scale(region_.scale())) {
+      settings_(settings_for_scale(region_.scale())),
+      partition_(resolve_partition(description_.partition, method_, tape_)) {
     settings_.polynomial_solver = description_.solver;
     (void)make_root_finder(method_, tape_, settings_);  // throws here, not in a render thread
+    if (partition_ != Partition::None) {
+        OctreeSettings octree;
+        octree.rule = partition_;
+        octree.max_depth = octree_depth_for(description_.footprint_pixels);
+        octree_.emplace(tape_, region_.box(), octree);
+    }
 }
 
 LeafScratch& ImplicitLeaf::scratch_for(TraceScratch& scratch) const {
@@ -76,13 +100,45 @@ SurfaceRef ImplicitLeaf::surface_at(const Ray& ray, double t, BoundaryKind kind)
     return s;
 }
 
+HitResult ImplicitLeaf::first_hit_in_cells(LeafScratch& leaf, Span span, TraceScratch& scratch) const {
+    // A ray that starts in the solid hits at once — also where that part of
+    // the solid holds no surface, so no cell.
+    if (leaf.h.value(span.t0, scratch.counters) <= 0.0) return {span.t0, HitStatus::Ok};
+    HitResult hit;
+    bool failed = false;
+    octree_->walk(leaf.h.ray(), span, [&](Span cell_span, const OctreeCell& cell) {
+        ++scratch.counters.cell_visits;
+        leaf.h.set_base_tape(octree_->tape_of(cell), cell.can_prune);
+        hit = leaf.finder->first_hit(leaf.h, cell_span, scratch.counters);
+        failed |= hit.status == HitStatus::Failed;
+        return hit.t.has_value();
+    });
+    leaf.h.set_base_tape(tape_, leaf.h.can_prune_full());
+    if (failed && !hit.t) hit.status = HitStatus::Failed;
+    return hit;
+}
+
+HitStatus ImplicitLeaf::all_hits(LeafScratch& leaf, Span span, TraceScratch& scratch) const {
+    if (!octree_) return leaf.finder->all_hits(leaf.h, span, leaf.roots, scratch.counters);
+    HitStatus status = HitStatus::Ok;
+    octree_->walk(leaf.h.ray(), span, [&](Span cell_span, const OctreeCell& cell) {
+        ++scratch.counters.cell_visits;
+        leaf.h.set_base_tape(octree_->tape_of(cell), cell.can_prune);
+        if (leaf.finder->all_hits(leaf.h, cell_span, leaf.roots, scratch.counters) == HitStatus::Failed)
+            status = HitStatus::Failed;
+        return false;
+    });
+    leaf.h.set_base_tape(tape_, leaf.h.can_prune_full());
+    return status;
+}
+
 std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
     const auto span = region_.clip(ray, t_min, t_max);
     if (!span) return std::nullopt;
     LeafScratch& leaf = scratch_for(scratch);
     const std::uint64_t nans = scratch.counters.nan_evaluations;
     leaf.h.set_ray(ray);
-    const HitResult hit = leaf.finder->first_hit(leaf.h, *span, scratch.counters);
+    const HitResult hit = octree_ ? first_hit_in_cells(leaf, *span, scratch) : leaf.finder->first_hit(leaf.h, *span, scratch.counters);
     note_nan(leaf, nans, scratch);
     if (hit.status == HitStatus::Failed) ++scratch.counters.failed_queries;
     if (!hit.t) return std::nullopt;
@@ -102,7 +158,7 @@ void ImplicitLeaf::spans(const Ray& ray, double t_min, double t_max, TraceScratc
     leaf.h.set_ray(ray);
     std::vector<double>& roots = leaf.roots;
     roots.clear();
-    if (leaf.finder->all_hits(leaf.h, *span, roots, scratch.counters) == HitStatus::Failed)
+    if (all_hits(leaf, *span, scratch) == HitStatus::Failed)
         ++scratch.counters.failed_queries;  // the spans below are those of the roots found so far
     // The events: t0, the roots strictly inside the span, t1.
     std::sort(roots.begin(), roots.end());

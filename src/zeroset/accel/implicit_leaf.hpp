@@ -11,9 +11,11 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "zeroset/accel/octree.hpp"
 #include "zeroset/accel/primitive.hpp"
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/trace/bounds.hpp"
@@ -38,7 +40,21 @@ struct LeafDescription {
     /// the default of the mode (normal_step()).
     double normal_step = 0.0;
     MaterialId material = no_material;
+    /// Spatial partitioning of the bounds (accel/octree.hpp); Auto is
+    /// resolved by resolve_partition.
+    Partition partition = Partition::Auto;
+    /// The largest size of the object on screen, in pixels, that the
+    /// octree's depth is chosen for (0: 512).
+    int footprint_pixels = 0;
 };
+
+/// Auto → Lipschitz for the methods that bound f over cells (interval, LG,
+/// sphere) on tapes of at least `partition_min_clauses` clauses; else None.
+/// An explicit choice on another method is an error (std::invalid_argument).
+inline constexpr std::size_t partition_min_clauses = 64;
+Partition resolve_partition(Partition asked, Method method, const Tape& tape);
+/// Cells about 16 pixels across at the given footprint: depth ⌈log₂(footprint/16)⌉, within [2, 8].
+int octree_depth_for(int footprint_pixels);
 
 /// A thread's evaluators and root finder for one leaf.
 struct LeafScratch {
@@ -57,6 +73,9 @@ public:
     /// slots). Throws std::invalid_argument when the method cannot trace the
     /// surface (the polynomial method on a non-polynomial f).
     ImplicitLeaf(std::size_t id, LeafDescription description);
+    // The octree and the scratch's evaluators point at the tape inside.
+    ImplicitLeaf(const ImplicitLeaf&) = delete;
+    ImplicitLeaf& operator=(const ImplicitLeaf&) = delete;
 
     [[nodiscard]] Box3 bounds() const override { return region_.box(); }
     std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
@@ -73,6 +92,9 @@ public:
     [[nodiscard]] const Tape& tape() const { return tape_; }
     [[nodiscard]] const RootFinderSettings& settings() const { return settings_; }
     [[nodiscard]] const LeafDescription& description() const { return description_; }
+    [[nodiscard]] Partition partition() const { return partition_; }
+    /// The octree of the bounds, when partitioned.
+    [[nodiscard]] const Octree* octree() const { return octree_ ? &*octree_ : nullptr; }
     /// The step of the difference normals, a length in the leaf's space:
     /// 3e-9 × scale for forward and 1e-6 × scale for central differences
     /// unless the description gives one — where the normal study
@@ -82,6 +104,10 @@ public:
 
 private:
     LeafScratch& scratch_for(TraceScratch& scratch) const;
+    /// The method run cell by cell along the ray, front to back.
+    HitResult first_hit_in_cells(LeafScratch& leaf, Span span, TraceScratch& scratch) const;
+    /// The roots in the span into leaf.roots, over the cells when partitioned.
+    HitStatus all_hits(LeafScratch& leaf, Span span, TraceScratch& scratch) const;
     /// Records a NaN the last query met (if it met one and it is the first).
     void note_nan(const LeafScratch& leaf, std::uint64_t nans_before, TraceScratch& scratch) const;
     [[nodiscard]] SurfaceRef surface_at(const Ray& ray, double t, BoundaryKind kind) const;
@@ -92,6 +118,8 @@ private:
     SearchRegion region_;  // the bounds, shrunk to the surface
     Method method_;
     RootFinderSettings settings_;
+    Partition partition_;
+    std::optional<Octree> octree_;
 };
 
 }  // namespace zeroset

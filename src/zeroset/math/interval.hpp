@@ -278,11 +278,11 @@ inline Interval floor(Interval a) {
 inline bool floor_may_jump(Interval a) { return !a.is_empty() && std::floor(a.lo) != std::floor(a.hi); }
 
 /// hypot: increasing in |a| and |b|, so the range runs from the smallest
-/// magnitudes to the largest (glibc's hypot is within 1 ulp).
+/// magnitudes to the largest (scalar hypot is within 1.5 ulps).
 inline Interval hypot(Interval a, Interval b) {
     if (a.is_empty() || b.is_empty()) return Interval::empty();
     const Interval ma = abs(a), mb = abs(b);
-    return {std::max(0.0, rounding::down2(std::hypot(ma.lo, mb.lo))), rounding::up2(std::hypot(ma.hi, mb.hi))};
+    return {std::max(0.0, rounding::down2(hypot(ma.lo, mb.lo))), rounding::up2(hypot(ma.hi, mb.hi))};
 }
 /// a/h over the box, within [−1, 1]; where h may be 0 (a and b both straddle
 /// it) every slope of the cone at its apex is possible: [−1, 1].

@@ -3,6 +3,8 @@
 // a material on a node an instance around its primitive.
 #include "zeroset/render/prepared_scene.hpp"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -26,6 +28,24 @@ PreparedScene::PreparedScene(const Scene& scene, const ObjectOverrides& override
 
 const Material& PreparedScene::material(MaterialId id) const {
     return id == no_material ? default_material_ : materials_.at(static_cast<std::size_t>(id));
+}
+
+std::string PreparedScene::partition_summary() const {
+    std::string text;
+    for (const ImplicitLeaf* leaf : leaves_) {
+        const Octree* octree = leaf->octree();
+        if (!octree) continue;
+        const OctreeStats& s = octree->stats();
+        char buffer[320];
+        std::snprintf(buffer, sizeof buffer,
+                      "'%s' %s octree: %zu cells (depth %d, built in %.2f s, %.1f MB), %zu → %.0f clauses a cell, "
+                      "median L %.3g",
+                      leaf->name().c_str(), std::string(partition_name(leaf->partition())).c_str(), s.cells, s.depth,
+                      s.build_seconds, static_cast<double>(s.bytes) / 1e6, s.full_clauses, s.mean_cell_clauses,
+                      s.median_lipschitz);
+        text += (text.empty() ? "" : "; ") + std::string(buffer);
+    }
+    return text;
 }
 
 std::vector<std::pair<std::string, int>> PreparedScene::method_counts() const {
@@ -62,6 +82,8 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             d.method = overrides_.method.value_or(o.method);
             d.solver = overrides_.solver.value_or(o.solver);
             d.normals = overrides_.normals.value_or(o.normals);
+            d.partition = overrides_.partition.value_or(o.partition);
+            d.footprint_pixels = overrides_.footprint_pixels;
             d.material = around;
             around = no_material;  // the leaf's own
             try {

@@ -21,6 +21,9 @@ struct ObjectOverrides {
     std::optional<Method> method;
     std::optional<PolynomialSolver> solver;
     std::optional<NormalMode> normals;
+    std::optional<Partition> partition;
+    /// The image's larger side: what the octrees' depth is chosen for.
+    int footprint_pixels = 0;
 };
 
 class PreparedScene {
@@ -38,6 +41,10 @@ public:
     [[nodiscard]] const Material& material(MaterialId id) const;
     /// How many distinct objects each method traces ("plane" for half-spaces), in the order of all_methods().
     [[nodiscard]] std::vector<std::pair<std::string, int>> method_counts() const;
+    /// The partitioned objects' octrees, e.g. "'bear' lipschitz octree: 8012 cells
+    /// (depth 6, built in 0.61 s, 14 MB), 434 → 120 clauses a cell, median L 3.9";
+    /// empty when no object is partitioned.
+    [[nodiscard]] std::string partition_summary() const;
     /// The scene's lights, or — when it has none — one white point light at the camera.
     [[nodiscard]] const std::vector<Light>& lights() const { return lights_; }
 

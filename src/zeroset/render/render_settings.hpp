@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "zeroset/accel/octree.hpp"
 #include "zeroset/trace/method.hpp"
 
 namespace zeroset {
@@ -22,6 +23,8 @@ struct RenderSettings {
     std::optional<PolynomialSolver> solver;
     /// When given, how every object's normals are computed.
     std::optional<NormalMode> normals;
+    /// When given, every object's spatial partitioning (accel/octree.hpp).
+    std::optional<Partition> partition;
     /// Evaluations of f (point, interval and gradient) the whole render may
     /// spend before it stops with a RenderError; default_evaluation_budget
     /// when absent.

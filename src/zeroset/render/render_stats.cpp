@@ -33,6 +33,12 @@ std::string summary_line(const RenderStats& s) {
         for (std::size_t i = 0; i < s.methods.size(); ++i)
             line += (i == 0 ? " " : ", ") + s.methods[i].first + " " + std::to_string(s.methods[i].second);
     }
+    if (!s.partitions.empty()) {
+        char cells[64];
+        const std::uint64_t rays = s.camera_rays + s.shadow_rays;
+        std::snprintf(cells, sizeof cells, "%.2f", rays ? static_cast<double>(s.counters.cell_visits) / static_cast<double>(rays) : 0.0);
+        line += "; " + s.partitions + "; " + cells + " cells a ray";
+    }
     return line;
 }
 

@@ -163,7 +163,8 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     check_camera(scene.camera);
     const auto start = std::chrono::steady_clock::now();
 
-    const PreparedScene prepared(scene, {settings.method, settings.solver, settings.normals});
+    const PreparedScene prepared(scene, {settings.method, settings.solver, settings.normals, settings.partition,
+                                         std::max(settings.width, settings.height)});
     const CameraRays camera(scene.camera, settings.width, settings.height);
     const double prepare_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::vector<Tile> tiles = make_tiles(settings.width, settings.height);
@@ -222,6 +223,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats.prepare_seconds = prepare_seconds;
     stats.methods = prepared.method_counts();
+    stats.partitions = prepared.partition_summary();
     return result;
 }
 

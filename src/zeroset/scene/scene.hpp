@@ -12,6 +12,7 @@
 #include "zeroset/math/mat4.hpp"
 #include "zeroset/math/vec3.hpp"
 #include "zeroset/trace/bounds.hpp"
+#include "zeroset/accel/octree.hpp"
 #include "zeroset/trace/method.hpp"
 
 namespace zeroset {
@@ -59,6 +60,7 @@ struct Object {
     Method method = Method::Auto;
     PolynomialSolver solver = PolynomialSolver::Fast;  // for Method::Polynomial
     NormalMode normals = NormalMode::Analytic;
+    Partition partition = Partition::Auto;  // spatial partitioning of the bounds (accel/octree.hpp)
 };
 
 struct SceneNode;

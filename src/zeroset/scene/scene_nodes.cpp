@@ -16,7 +16,8 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 6> object_keys{"surface", "bounds", "method", "solver", "normals", "material"};
+constexpr std::array<std::string_view, 7> object_keys{"surface", "bounds", "method", "solver", "normals", "partition",
+                                                      "material"};
 constexpr std::array<std::string_view, 5> transform_keys{"translate", "rotate", "scale", "shear", "matrix"};
 constexpr std::array<std::string_view, 6> node_keywords{"object",     "group",    "union", "intersection",
                                                         "difference", "instance"};
@@ -117,6 +118,8 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
                 object.solver = polynomial_solver();
             } else if (key.text == "normals") {
                 object.normals = normal_mode();
+            } else if (key.text == "partition") {
+                object.partition = partition();
             } else {
                 node->material = material(key);
             }

@@ -283,6 +283,12 @@ const Token& SceneParser::choice(std::string_view what, std::span<const std::str
 
 Method SceneParser::method() { return *method_from_name(choice("method", method_names()).text); }
 
+Partition SceneParser::partition() {
+    std::vector<std::string_view> names;
+    for (const Partition p : all_partitions()) names.push_back(partition_name(p));
+    return *partition_from_name(choice("partition", names).text);
+}
+
 PolynomialSolver SceneParser::polynomial_solver() {
     std::vector<std::string_view> names;
     for (const PolynomialSolver s : all_polynomial_solvers()) names.push_back(polynomial_solver_name(s));

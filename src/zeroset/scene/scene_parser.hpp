@@ -82,6 +82,7 @@ private:
     const Token& choice(std::string_view what, std::span<const std::string_view> names);
     Method method();
     PolynomialSolver polynomial_solver();
+    Partition partition();
     NormalMode normal_mode();
     /// Reads `{ key value … }`: keys from `keys`, each at most once unless it
     /// is `repeatable`, in any order; `on_key` reads the value of the key

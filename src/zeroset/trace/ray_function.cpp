@@ -10,13 +10,21 @@ namespace zeroset {
 
 RayFunction::RayFunction(const Tape& tape)
     : tape_(&tape), point_(tape), jet_(tape), value_enclosure_(tape), enclosure_(tape), slope_(tape), bound_(&tape),
+      base_(&tape),
       can_prune_(std::any_of(tape.clauses().begin(), tape.clauses().end(),
-                             [](const Clause& c) { return c.op == Op::Min || c.op == Op::Max; })) {}
+                             [](const Clause& c) { return c.op == Op::Min || c.op == Op::Max; })),
+      base_can_prune_(can_prune_) {}
 
 void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;
     const double length = std::hypot(ray.dir.x, ray.dir.y, ray.dir.z);  // no underflow for tiny directions
     dir_length_ = length > 0.0 ? rounding::up(length) : 0.0;
+    set_base_tape(*tape_, can_prune_);
+}
+
+void RayFunction::set_base_tape(const Tape& tape, bool can_prune) {
+    base_ = &tape;
+    base_can_prune_ = can_prune;
     valid_depths_ = 0;
     use_full_tape();
 }
@@ -70,8 +78,8 @@ Interval RayFunction::prune(std::size_t depth, double a, double b, TraceCounters
         tape_at_.resize(SegmentStack::max_depth);
     }
     // The parent is the tape of the enclosing segment, pruned at depth − 1
-    // on this ray; without one (a first prune deeper than 0) the full tape.
-    const Tape& parent = depth == 0 || depth > valid_depths_ ? *tape_ : *tape_at_[depth - 1];
+    // on this ray; without one (a first prune deeper than 0) the base tape.
+    const Tape& parent = depth == 0 || depth > valid_depths_ ? *base_ : *tape_at_[depth - 1];
     const Interval f = pruner_->evaluate(parent, segment_box(a, b));
     const Tape& tape = pruner_->simplified(pruned_[depth]);
     tape_at_[depth] = &tape;

@@ -35,6 +35,11 @@ public:
 
     /// Starts a new ray on the full tape.
     void set_ray(const Ray& ray);
+    /// Makes `tape` — the full tape pruned to a region the ray's next
+    /// queries stay in (an octree cell) — the tape those queries start
+    /// from, as the full tape is after set_ray(); `can_prune` says whether
+    /// it still has a min or max. It must outlive its use.
+    void set_base_tape(const Tape& tape, bool can_prune);
     [[nodiscard]] const Ray& ray() const { return ray_; }
     /// |x_d|, rounded up: a length ℓ in space is ℓ / dir_length() in t.
     [[nodiscard]] double dir_length() const { return dir_length_; }
@@ -65,12 +70,15 @@ public:
     /// nesting depth, below SegmentStack::max_depth.
     Interval prune(std::size_t depth, double a, double b, TraceCounters& counters);
     /// Whether prune() can shorten the tape: it has a min or max.
-    [[nodiscard]] bool can_prune() const { return can_prune_; }
+    [[nodiscard]] bool can_prune() const { return base_can_prune_; }
+    /// Whether the full tape has a min or max.
+    [[nodiscard]] bool can_prune_full() const { return can_prune_; }
     /// The box around the ray over [a, b], with the rounding of x_o + t·x_d enclosed.
     [[nodiscard]] Box3 segment_box(double a, double b) const;
-    /// Goes back to the full tape (valid everywhere), as after set_ray().
+    /// Goes back to the base tape: the full tape (valid everywhere) after
+    /// set_ray(), or the one set_base_tape() gave.
     void use_full_tape() {
-        if (bound_ != tape_) use_tape(*tape_);
+        if (bound_ != base_) use_tape(*base_);
     }
 
     /// Records that H is NaN at p (counted in TraceCounters::nan_evaluations).
@@ -102,7 +110,9 @@ private:
     std::vector<const Tape*> tape_at_;  // the tape in use at depth d: pruned_[d] or its parent's
     std::size_t valid_depths_ = 0;      // tape_at_[d] belongs to this ray's current segments for d < this
     const Tape* bound_;                 // the tape the evaluators walk
-    bool can_prune_;
+    const Tape* base_;                  // what depth 0 prunes from: the full tape or a cell's
+    bool can_prune_;                    // the full tape has a min or max
+    bool base_can_prune_;               // the base tape has one
 };
 
 }  // namespace zeroset

@@ -13,6 +13,7 @@ struct TraceCounters {
     std::uint64_t gradient_evaluations = 0;  // f and ∇f over a box (for a Lipschitz bound)
     std::uint64_t nan_evaluations = 0;       // point evaluations that gave NaN
     std::uint64_t failed_queries = 0;        // ray queries a method gave up on (a budget spent), answered "no hit"
+    std::uint64_t cell_visits = 0;           // octree cells a method ran in (accel/octree.hpp)
     /// Not a count: once evaluations() passes it, the subdividing methods
     /// give up (Failed) at their next segment. The renderer sets its budget
     /// here, so that one query cannot run far past it.
@@ -29,6 +30,7 @@ struct TraceCounters {
         gradient_evaluations += o.gradient_evaluations;
         nan_evaluations += o.nan_evaluations;
         failed_queries += o.failed_queries;
+        cell_visits += o.cell_visits;
         return *this;
     }
 };

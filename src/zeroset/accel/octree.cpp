@@ -1,0 +1,289 @@
+// Building the octree: the survey's cell tests, each cell's tape pruned from
+// its parent's, the top levels breadth first and their subtrees depth first
+// on all cores.
+#include "zeroset/accel/octree.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <thread>
+
+#include "zeroset/expr/evaluator.hpp"
+#include "zeroset/expr/lipschitz.hpp"
+#include "zeroset/expr/tape_pruner.hpp"
+
+namespace zeroset {
+
+std::string_view partition_name(Partition partition) {
+    switch (partition) {
+        case Partition::Auto: return "auto";
+        case Partition::None: return "none";
+        case Partition::Lipschitz: return "lipschitz";
+        case Partition::VertexSign: return "vertex-sign";
+    }
+    return "?";
+}
+
+std::span<const Partition> all_partitions() {
+    static constexpr Partition all[] = {Partition::Auto, Partition::None, Partition::Lipschitz, Partition::VertexSign};
+    return all;
+}
+
+std::optional<Partition> partition_from_name(std::string_view name) {
+    for (const Partition p : all_partitions())
+        if (partition_name(p) == name) return p;
+    return std::nullopt;
+}
+
+namespace {
+
+bool has_choices(const Tape& tape) {
+    return std::any_of(tape.clauses().begin(), tape.clauses().end(),
+                       [](const Clause& c) { return c.op == Op::Min || c.op == Op::Max; });
+}
+
+/// A subtree still to build: its node, box and depth, and the tape pruned
+/// to its parent (owned, as the breadth-first stage moves on).
+struct Task {
+    std::uint32_t node;
+    Box3 box;
+    int depth;
+    std::shared_ptr<const Tape> parent;
+};
+
+}  // namespace
+
+/// One thread's evaluators and its part of the octree, with indices local
+/// to it until Octree's constructor appends them.
+class OctreeBuilder {
+public:
+    enum class Verdict { Empty, Keep, Undefined };
+    struct Classified {
+        Verdict verdict;
+        const Tape* tape;  // pruned to the cell (or the parent's, when nothing pruned)
+    };
+
+    OctreeBuilder(const Tape& source, const OctreeSettings& settings, double pad, std::atomic<std::size_t>& cell_count,
+                  std::atomic<std::size_t>& stored)
+        : source_(source), settings_(settings), pad_(pad), pruner_(source), point_(source), centre_(source),
+          slope_(source), level_(static_cast<std::size_t>(settings.max_depth) + 1), cell_count_(cell_count),
+          stored_clauses_(stored) {}
+
+    /// The survey's tests for the cell `box` at `depth`, on the parent's tape.
+    Classified classify(const Box3& box, int depth, const Tape& parent) {
+        const Box3 cell = pad(box);
+        const Interval f = pruner_.evaluate(parent, cell);
+        const Tape& tape = pruner_.simplified(level_[static_cast<std::size_t>(depth)]);
+        if (f.is_empty()) return {Verdict::Undefined, &tape};  // NaN all over: kept, so a ray reports it
+        if (settings_.rule == Partition::VertexSign) {
+            if (depth < 2) return {Verdict::Keep, &tape};
+            return {corners_differ(tape, cell) ? Verdict::Keep : Verdict::Empty, &tape};
+        }
+        if (f.lo > 0.0 || f.hi < 0.0) return {Verdict::Empty, &tape};
+        if (corners_differ(tape, cell)) return {Verdict::Keep, &tape};
+        // Kalra–Barr: no zero within r of the centre when |f(centre)| > L·r.
+        const double radius = rounding::up(0.5 * cell.diagonal());
+        const double bound = rounding::up(lipschitz(tape, cell) * radius);
+        const Vec3d c = cell.center();
+        centre_.rebind(tape);
+        const Interval at_centre = centre_(Interval(c.x), Interval(c.y), Interval(c.z));
+        if (at_centre.lo > bound || at_centre.hi < -bound) return {Verdict::Empty, &tape};
+        return {Verdict::Keep, &tape};
+    }
+
+    /// Builds the subtree of `task` depth first; returns its root node.
+    Octree::Node build(const Task& task) {
+        const Classified c = classify(task.box, task.depth, *task.parent);
+        return descend(task.box, task.depth, c, OctreeCell::full_tape, task.parent->clauses().size());
+    }
+
+    /// The node for a classified cell: empty, a leaf, or 8 children built
+    /// here. `inherited` is the stored tape the cell would otherwise walk.
+    Octree::Node descend(const Box3& box, int depth, const Classified& c, std::uint32_t inherited,
+                         std::size_t inherited_clauses) {
+        if (c.verdict == Verdict::Empty) return {};
+        // A tape is stored when it is clearly shorter than the inherited one.
+        std::uint32_t ref = inherited;
+        std::size_t ref_clauses = inherited_clauses;
+        if (c.tape->clauses().size() * 10 <= inherited_clauses * 9 &&
+            stored_clauses_.fetch_add(c.tape->clauses().size()) < settings_.max_stored_clauses) {
+            ref = static_cast<std::uint32_t>(tapes.size());
+            ref_clauses = c.tape->clauses().size();
+            tapes.push_back(*c.tape);
+        }
+        const bool at_limit = depth >= settings_.max_depth || cell_count_.load() >= settings_.max_cells;
+        if (c.verdict == Verdict::Undefined || at_limit) return leaf(box, *c.tape, ref);
+        const auto first = static_cast<std::uint32_t>(nodes.size());
+        nodes.resize(nodes.size() + 8);
+        for (int i = 0; i < 8; ++i) {
+            const Box3 child = Octree::child_box(box, i);
+            const Classified cc = classify(child, depth + 1, *c.tape);
+            const Octree::Node n = descend(child, depth + 1, cc, ref, ref_clauses);
+            nodes[first + static_cast<std::uint32_t>(i)] = n;
+        }
+        return {Octree::Kind::Inner, first};
+    }
+
+    /// A leaf cell walking `tape` (stored as `ref`, or the full tape).
+    Octree::Node leaf(const Box3& box, const Tape& tape, std::uint32_t ref) {
+        OctreeCell cell;
+        cell.tape = ref;
+        const Tape& walked = ref == OctreeCell::full_tape ? source_ : tapes[ref];
+        cell.can_prune = has_choices(walked);
+        cell.lipschitz = static_cast<float>(lipschitz(tape, pad(box)));
+        if (std::isfinite(cell.lipschitz) && cell.lipschitz > 0.0f)
+            cell.lipschitz = std::nextafter(cell.lipschitz, std::numeric_limits<float>::infinity());
+        cells.push_back(cell);
+        boxes.push_back(box);
+        cell_count_.fetch_add(1);
+        return {Octree::Kind::Leaf, static_cast<std::uint32_t>(cells.size() - 1)};
+    }
+
+    std::vector<Octree::Node> nodes;
+    std::vector<OctreeCell> cells;
+    std::vector<Box3> boxes;
+    std::vector<Tape> tapes;
+
+private:
+    [[nodiscard]] Box3 pad(const Box3& box) const {
+        return {box.lo - Vec3d{pad_, pad_, pad_}, box.hi + Vec3d{pad_, pad_, pad_}};
+    }
+    bool corners_differ(const Tape& tape, const Box3& box) {
+        point_.rebind(tape);
+        bool negative = false, positive = false;
+        for (int i = 0; i < 8; ++i) {
+            const double v = point_(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y, i & 4 ? box.hi.z : box.lo.z);
+            negative |= v < 0.0;
+            positive |= v > 0.0;
+        }
+        return negative && positive;
+    }
+    double lipschitz(const Tape& tape, const Box3& box) {
+        slope_.rebind(tape);
+        return lipschitz_bound(slope_, box).constant;
+    }
+
+    const Tape& source_;
+    const OctreeSettings& settings_;
+    double pad_;
+    TapePruner pruner_;
+    Evaluator<double> point_;
+    Evaluator<Interval> centre_;
+    Evaluator<Dual<Interval>> slope_;
+    std::vector<Tape> level_;  // level_[d]: the tape pruned at depth d on the current path
+    std::atomic<std::size_t>& cell_count_;
+    std::atomic<std::size_t>& stored_clauses_;
+};
+
+Octree::Octree(const Tape& tape, const Box3& box, const OctreeSettings& settings)
+    : source_(&tape), root_(box), pad_(1e-9 * box.diagonal()) {
+    const auto start = std::chrono::steady_clock::now();
+    OctreeSettings s = settings;
+    s.max_depth = std::clamp(s.max_depth, 0, max_supported_depth);
+    const int threads = s.threads > 0 ? s.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    std::atomic<std::size_t> cell_count{0}, stored{0};
+    std::vector<std::unique_ptr<OctreeBuilder>> builders;
+    for (int t = 0; t < threads; ++t)
+        builders.push_back(std::make_unique<OctreeBuilder>(tape, s, pad_, cell_count, stored));
+
+    // Breadth first until there is work for every thread: the nodes so made
+    // are the top of nodes_; cells made there (at a small max_depth, or
+    // undefined regions) come from builder 0, appended with the rest below.
+    nodes_.resize(1);
+    const auto shared_source = std::shared_ptr<const Tape>(source_, [](const Tape*) {});
+    std::vector<Task> tasks{{0, box, 0, shared_source}};
+    const std::size_t enough = 16 * static_cast<std::size_t>(threads);
+    OctreeBuilder& top = *builders.front();
+    std::vector<Task> ready;
+    while (!tasks.empty() && tasks.size() < enough) {
+        std::vector<Task> next;
+        for (const Task& task : tasks) {
+            const OctreeBuilder::Classified c = top.classify(task.box, task.depth, *task.parent);
+            if (c.verdict == OctreeBuilder::Verdict::Empty) continue;
+            if (c.verdict == OctreeBuilder::Verdict::Undefined || task.depth >= s.max_depth) {
+                ready.push_back(task);  // a leaf: built (re-classified) by a builder below
+                continue;
+            }
+            const auto first = static_cast<std::uint32_t>(nodes_.size());
+            nodes_.resize(nodes_.size() + 8);
+            nodes_[task.node] = {Kind::Inner, first};
+            const auto pruned = std::make_shared<const Tape>(*c.tape);
+            for (int i = 0; i < 8; ++i)
+                next.push_back({first + static_cast<std::uint32_t>(i), child_box(task.box, i), task.depth + 1, pruned});
+        }
+        tasks = std::move(next);
+    }
+    tasks.insert(tasks.end(), ready.begin(), ready.end());
+
+    // The subtrees, spread over the threads.
+    std::vector<Node> roots(tasks.size());
+    std::vector<std::size_t> owner(tasks.size());
+    std::atomic<std::size_t> next_task{0};
+    const auto run = [&](std::size_t t) {
+        for (std::size_t i = next_task++; i < tasks.size(); i = next_task++) {
+            roots[i] = builders[t]->build(tasks[i]);
+            owner[i] = t;
+        }
+    };
+    {
+        std::vector<std::jthread> pool;
+        for (std::size_t t = 1; t < builders.size() && t < tasks.size(); ++t) pool.emplace_back(run, t);
+        run(0);
+    }
+
+    // Append every builder's part, its local indices moved past what is there.
+    std::vector<std::uint32_t> node_base(builders.size()), cell_base(builders.size());
+    std::vector<Box3> boxes;
+    for (std::size_t t = 0; t < builders.size(); ++t) {
+        OctreeBuilder& b = *builders[t];
+        node_base[t] = static_cast<std::uint32_t>(nodes_.size());
+        cell_base[t] = static_cast<std::uint32_t>(cells_.size());
+        const auto tape_base = static_cast<std::uint32_t>(tapes_.size());
+        for (Node n : b.nodes) {
+            if (n.kind == Kind::Inner) n.index += node_base[t];
+            if (n.kind == Kind::Leaf) n.index += cell_base[t];
+            nodes_.push_back(n);
+        }
+        for (OctreeCell c : b.cells) {
+            if (c.tape != OctreeCell::full_tape) c.tape += tape_base;
+            cells_.push_back(c);
+        }
+        boxes.insert(boxes.end(), b.boxes.begin(), b.boxes.end());
+        for (Tape& stored_tape : b.tapes) tapes_.push_back(std::move(stored_tape));
+    }
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+        Node n = roots[i];
+        if (n.kind == Kind::Inner) n.index += node_base[owner[i]];
+        if (n.kind == Kind::Leaf) n.index += cell_base[owner[i]];
+        nodes_[tasks[i].node] = n;
+    }
+    boxes_ = std::move(boxes);
+
+    // The statistics.
+    stats_.cells = cells_.size();
+    stats_.nodes = nodes_.size();
+    stats_.full_clauses = tape.clauses().size();
+    std::vector<double> finite;
+    double clause_sum = 0.0;
+    for (const OctreeCell& c : cells_) {
+        clause_sum += static_cast<double>(tape_of(c).clauses().size());
+        if (std::isfinite(c.lipschitz)) finite.push_back(c.lipschitz);
+    }
+    for (const Tape& t : tapes_) stats_.stored_clauses += t.clauses().size();
+    stats_.unbounded_cells = cells_.size() - finite.size();
+    stats_.mean_cell_clauses = cells_.empty() ? 0.0 : clause_sum / static_cast<double>(cells_.size());
+    std::sort(finite.begin(), finite.end());
+    if (!finite.empty()) {
+        stats_.median_lipschitz = finite[finite.size() / 2];
+        stats_.p90_lipschitz = finite[finite.size() * 9 / 10];
+    }
+    stats_.bytes = nodes_.size() * sizeof(Node) + cells_.size() * (sizeof(OctreeCell) + sizeof(Box3)) +
+                   stats_.stored_clauses * (sizeof(Clause) + sizeof(ClauseOperands));
+    for (const Tape& t : tapes_) stats_.bytes += t.constants().size() * sizeof(std::pair<std::uint32_t, double>);
+    stats_.depth = s.max_depth;
+    stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace zeroset
