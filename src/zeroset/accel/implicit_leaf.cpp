@@ -102,19 +102,21 @@ SurfaceRef ImplicitLeaf::surface_at(const Ray& ray, double t, BoundaryKind kind)
 
 HitResult ImplicitLeaf::first_hit_in_cells(LeafScratch& leaf, Span span, TraceScratch& scratch) const {
     // A ray that starts in the solid hits at once — also where that part of
-    // the solid holds no surface, so no cell.
-    if (leaf.h.value(span.t0, scratch.counters) <= 0.0) return {span.t0, HitStatus::Ok};
+    // the solid holds no surface, so no cell. NaN there fails, as unpartitioned.
+    const double start = leaf.h.value(span.t0, scratch.counters);
+    if (start != start) return {std::nullopt, HitStatus::Failed};
+    if (start <= 0.0) return {span.t0, HitStatus::Ok};
     HitResult hit;
-    bool failed = false;
     octree_->walk(leaf.h.ray(), span, [&](Span cell_span, const OctreeCell& cell) {
         ++scratch.counters.cell_visits;
         leaf.h.set_base_tape(octree_->tape_of(cell), cell.can_prune);
         hit = leaf.finder->first_hit(leaf.h, cell_span, scratch.counters);
-        failed |= hit.status == HitStatus::Failed;
-        return hit.t.has_value();
+        // A failure in one cell (NaN, a budget spent) fails the query, as it
+        // fails a method over the whole span: a later hit is not trusted.
+        if (hit.status == HitStatus::Failed) hit.t.reset();
+        return hit.t.has_value() || hit.status == HitStatus::Failed;
     });
     leaf.h.set_base_tape(tape_, leaf.h.can_prune_full());
-    if (failed && !hit.t) hit.status = HitStatus::Failed;
     return hit;
 }
 
@@ -163,7 +165,11 @@ void ImplicitLeaf::spans(const Ray& ray, double t_min, double t_max, TraceScratc
     // The events: t0, the roots strictly inside the span, t1.
     std::sort(roots.begin(), roots.end());
     std::erase_if(roots, [&](double t) { return !(t > span->t0 && t < span->t1); });
-    roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+    // Cells overlap by their pad, so a root near a face may come from both:
+    // roots closer than the methods' own merge width are one.
+    const double merge_width = 4.0 * leaf.h.to_t(settings_.tangent_width);
+    roots.erase(std::unique(roots.begin(), roots.end(), [merge_width](double a, double b) { return b - a <= merge_width; }),
+                roots.end());
     const auto event = [&](std::size_t i) { return i == 0 ? span->t0 : (i <= roots.size() ? roots[i - 1] : span->t1); };
     const std::size_t gaps = roots.size() + 1;
     const auto boundary = [&](std::size_t i) {

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <thread>
 
@@ -42,6 +43,14 @@ namespace {
 bool has_choices(const Tape& tape) {
     return std::any_of(tape.clauses().begin(), tape.clauses().end(),
                        [](const Clause& c) { return c.op == Op::Min || c.op == Op::Max; });
+}
+
+/// 10⁻⁵ of the diagonal, and at least 64 ulps of the largest coordinate.
+double cell_pad(const Box3& box) {
+    const double largest = std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z), std::abs(box.hi.x),
+                                     std::abs(box.hi.y), std::abs(box.hi.z)});
+    const double ulp = std::nextafter(largest, std::numeric_limits<double>::infinity()) - largest;
+    return std::max(1e-5 * box.diagonal(), 64.0 * ulp);
 }
 
 /// A subtree still to build: its node, box and depth, and the tape pruned
@@ -96,7 +105,9 @@ public:
     /// Builds the subtree of `task` depth first; returns its root node.
     Octree::Node build(const Task& task) {
         const Classified c = classify(task.box, task.depth, *task.parent);
-        return descend(task.box, task.depth, c, OctreeCell::full_tape, task.parent->clauses().size());
+        // The tapes of the breadth-first stage are not stored: the cell
+        // would otherwise walk the full tape, so that is what it must beat.
+        return descend(task.box, task.depth, c, OctreeCell::full_tape, source_.clauses().size());
     }
 
     /// The node for a classified cell: empty, a leaf, or 8 children built
@@ -178,7 +189,7 @@ private:
 };
 
 Octree::Octree(const Tape& tape, const Box3& box, const OctreeSettings& settings)
-    : source_(&tape), root_(box), pad_(1e-9 * box.diagonal()) {
+    : source_(&tape), root_(box), pad_(cell_pad(box)) {
     const auto start = std::chrono::steady_clock::now();
     OctreeSettings s = settings;
     s.max_depth = std::clamp(s.max_depth, 0, max_supported_depth);

@@ -14,9 +14,12 @@
 //    it loses thin features that pass between the corners — the survey's
 //    "main flaw", kept as the alternative for comparison.
 // Surviving cells are subdivided to `max_depth`; the leaves are the cells.
-// Every cell box is widened by a tiny pad (1e-9 of the root's diagonal) in
-// both the build and the ray walk, so rounding in the slab test never loses
-// a root on a face between two cells.
+// Every cell is built over its box widened by a pad of 10⁻⁵ of the root's
+// diagonal (at least 64 ulps of its coordinates), and rays walk the boxes
+// widened by a tenth of that: rounding in the slab test never loses a root
+// on a face between two cells, and the methods' probes just past the end of
+// a cell's span (sphere tracing looks 2ε = 2·10⁻⁶ of the object's size
+// ahead; pole probes 16 tangent widths) stay where the cell's tape holds.
 #pragma once
 
 #include <cstddef>
@@ -144,7 +147,7 @@ void Octree::walk(const Ray& ray, Span span, Visit&& visit) const {
     Entry stack[7 * max_supported_depth + 1];
     int top = 0;
     stack[top++] = {0, root_};
-    const double pad = 0.5 * pad_;
+    const double pad = 0.1 * pad_;
     while (top > 0) {
         const Entry e = stack[--top];
         const Node& node = nodes_[e.node];

@@ -1,0 +1,36 @@
+#!/usr/bin/env python3
+"""Writes a scene of an N-atom "exp molecule" (default 50): Blinn's blobby
+model (survey eq. 12) as one expression, f = 1 − Σ exp(−4 (|p − cᵢ|² − 0.25)),
+each atom alone a ball of radius 0.5, placed along a seeded random walk of
+0.55-long bonds (so neighbours blend). Used by bench/complex_models.sh."""
+import math
+import random
+import sys
+
+atoms = int(sys.argv[1]) if len(sys.argv) > 1 else 50
+rng = random.Random(1993)
+centres = [(0.0, 0.0, 0.0)]
+while len(centres) < atoms:
+    x, y, z = centres[rng.randrange(len(centres))]
+    theta, u = rng.uniform(0, 2 * math.pi), rng.uniform(-1, 1)
+    s = math.sqrt(1 - u * u)
+    c = (x + 0.55 * s * math.cos(theta), y + 0.55 * s * math.sin(theta), z + 0.55 * u)
+    if all(math.dist(c, o) > 0.45 for o in centres):
+        centres.append(c)
+lo = [min(c[i] for c in centres) - 1.2 for i in range(3)]
+hi = [max(c[i] for c in centres) + 1.2 for i in range(3)]
+mid = [(a + b) / 2 for a, b in zip(lo, hi)]
+size = max(b - a for a, b in zip(lo, hi))
+terms = " +\n    ".join(
+    f"exp(-4 * ((x - {x:.4f})^2 + (y - {y:.4f})^2 + (z - {z:.4f})^2 - 0.25))" for x, y, z in centres)
+print(f"""# A {atoms}-atom exp molecule, written by bench/models/molecule.py.
+image  {{ width 640  height 480 }}
+camera {{ from ({mid[0]:.3f}, {mid[1] + 0.4 * size:.3f}, {mid[2] - 1.6 * size:.3f})  at ({mid[0]:.3f}, {mid[1]:.3f}, {mid[2]:.3f})  fov 40 }}
+light  {{ from ({mid[0] - size:.3f}, {mid[1] + 2 * size:.3f}, {mid[2] - 2 * size:.3f}) }}
+
+object "molecule" {{
+  surface 1 - (
+    {terms})
+  bounds box(({lo[0]:.3f}, {lo[1]:.3f}, {lo[2]:.3f}), ({hi[0]:.3f}, {hi[1]:.3f}, {hi[2]:.3f}))
+  material {{ color (0.3, 0.5, 0.8)  specular 0.4  shininess 40 }}
+}}""")
