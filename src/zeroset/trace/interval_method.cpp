@@ -29,12 +29,6 @@ HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& coun
             return HitStatus::Failed;
         const Segment s = segments.pop();
         if (!narrow(h, s, counters)) continue;  // and the tape pruned to s
-        // Fig. 9, step 2 with plain intervals first: most segments end here,
-        // at about a third of the cost of enclosing H′ and H″ as well.
-        if (!h.can_prune() && !settings_.log) {
-            const Interval v = h.enclose_segment(s.a, s.b, counters);
-            if (!v.is_empty() && !v.contains(0.0)) continue;
-        }
         const Jet<Interval> e = h.enclose(s.a, s.b, counters);
         if (settings_.log) settings_.log->interval_boxes.push_back({s.a, s.b, e.v.lo, e.v.hi});
         if (e.v.is_empty()) return HitStatus::Failed;  // H is undefined (NaN) over the segment

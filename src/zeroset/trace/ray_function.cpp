@@ -50,14 +50,6 @@ Interval RayFunction::enclose_value(double t, TraceCounters& counters) {
                             coordinate(ray_.origin.z, ray_.dir.z));
 }
 
-Interval RayFunction::enclose_segment(double a, double b, TraceCounters& counters) {
-    ++counters.interval_evaluations;
-    const Interval t(a, b);
-    const auto coordinate = [&t](double o, double d) { return Interval(o) + Interval(d) * t; };
-    return value_enclosure_(coordinate(ray_.origin.x, ray_.dir.x), coordinate(ray_.origin.y, ray_.dir.y),
-                            coordinate(ray_.origin.z, ray_.dir.z));
-}
-
 Jet<Interval> RayFunction::enclose(double a, double b, TraceCounters& counters) {
     ++counters.interval_evaluations;
     Jet<Interval> j = evaluate_along_ray(enclosure_, ray_.origin, ray_.dir, Interval(a, b));

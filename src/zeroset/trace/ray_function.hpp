@@ -53,8 +53,6 @@ public:
     /// An enclosure of H(t) at one t, free of rounding doubts (the point
     /// x_o + t·x_d itself is enclosed, not rounded).
     Interval enclose_value(double t, TraceCounters& counters);
-    /// An enclosure of H over t ∈ [a, b] (plain intervals: no derivatives).
-    Interval enclose_segment(double a, double b, TraceCounters& counters);
     /// Enclosures of H, H′ and H″ over t ∈ [a, b].
     Jet<Interval> enclose(double a, double b, TraceCounters& counters);
     /// A Lipschitz bound of H over t ∈ [a, b]: L·|x_d|, where L bounds |∇f|
