@@ -22,7 +22,7 @@ case $scene in
   barth)
     width=${SIZE:-512}
     height=$width
-    solvers=${SOLVERS:-"closed sturm descartes laguerre fast"}
+    solvers=${SOLVERS-"closed sturm descartes laguerre fast"}
     python3 bench/povray/expand_barth.py > "$work/terms.txt"
     sed -e "/@TERMS@/{r $work/terms.txt" -e "d}" bench/povray/barth_sextic.pov.in > "$work/scene.pov"
     zs=scenes/algebraic/barth_sextic.zs
@@ -55,7 +55,7 @@ pov=$(median_time povray "+I$work/scene.pov" "+O$work/pov.png" "+W$width" "+H$he
 trace_times=()
 for _ in $(seq "$runs"); do
   povray "+I$work/scene.pov" "+O$work/pov.png" "+W$width" "+H$height" -A -D "+WT$threads" +GS -GR -GD -GF -GW > /dev/null 2> "$work/pov.txt"
-  trace_times+=("$(sed -n 's/^Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$work/pov.txt" | head -1)")
+  trace_times+=("$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$work/pov.txt" | head -1)")
 done
 pov_trace=$(printf '%s\n' "${trace_times[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
 printf '%-34s %8.3f s   (its own trace time %.3f s)\n' "$pov_label" "$pov" "$pov_trace"
