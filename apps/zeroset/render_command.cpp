@@ -45,8 +45,9 @@ Options:
                       or central (central differences); default: the object's,
                       else analytic (see docs/rendering.md#normals)
   --partition P       spatial partitioning of every object's bounds: auto,
-                      none, lipschitz (Kalra-Barr octree) or vertex-sign
-                      (Bloomenthal's); default: the object's, else auto
+                      none, lipschitz (Kalra-Barr octree), vertex-sign
+                      (Bloomenthal's octree) or seed-fill (Bloomenthal's
+                      surface tracking); default: the object's, else auto
                       (lipschitz for the interval, lg and sphere methods on
                       tapes of 64 clauses or more; see docs/methods.md)
   --max-evaluations N stop with an error once the render has spent N

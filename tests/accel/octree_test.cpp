@@ -138,6 +138,52 @@ TEST(Octree, VertexSignMissesAThinSheetTheLipschitzOctreeKeeps) {
     EXPECT_EQ(sheet_hits_lost, 0);
 }
 
+/// Surface tracking (§6.2) keeps exactly the straddling cells of the finest
+/// grid that are connected to its seed: all of them on one sphere, none of
+/// a second sphere apart from the first — tracking's own flaw.
+TEST(Octree, SeedFillTracksTheSeedsComponentOnly) {
+    const Box3 box{{-1, -1, -1}, {1, 1, 1}};
+    OctreeSettings settings;
+    settings.rule = Partition::SeedFill;
+    settings.max_depth = 4;
+    const Expr centre = hypot(hypot(x, y), z) - 0.5;
+    const Expr corner = hypot(hypot(x - 0.7, y - 0.7), z - 0.7) - 0.2;
+    // Brute force: the straddling cells of the 16³ grid.
+    const auto straddling = [&](const Expr& f) {
+        const Tape tape(f);
+        Evaluator<double> e(tape);
+        std::size_t count = 0;
+        const double h = 2.0 / 16;
+        for (int i = 0; i < 16; ++i)
+            for (int j = 0; j < 16; ++j)
+                for (int k = 0; k < 16; ++k) {
+                    bool negative = false, positive = false;
+                    for (int c = 0; c < 8; ++c) {
+                        const double v = e(-1 + h * (i + (c & 1)), -1 + h * (j + ((c >> 1) & 1)), -1 + h * (k + (c >> 2)));
+                        negative |= v < 0;
+                        positive |= v > 0;
+                    }
+                    count += negative && positive;
+                }
+        return count;
+    };
+    const Tape one(centre);
+    const Octree tracked(one, box, settings);
+    EXPECT_GT(tracked.stats().cells, 50u);
+    EXPECT_EQ(tracked.stats().cells, straddling(centre));
+
+    const Tape two(min(centre, corner));
+    const Octree tracked_two(two, box, settings);
+    EXPECT_EQ(tracked_two.stats().cells, tracked.stats().cells);  // the corner ball is not reached
+    EXPECT_GT(straddling(min(centre, corner)), straddling(centre));
+    settings.rule = Partition::Lipschitz;
+    const Octree lipschitz(two, box, settings);
+    for (const Vec3d& p : {Vec3d{0.9, 0.7, 0.7}, Vec3d{0.5, 0.0, 0.0}})
+        EXPECT_TRUE(in_some_cell(lipschitz, p, 0.0)) << p.x;
+    EXPECT_FALSE(in_some_cell(tracked_two, {0.9, 0.7, 0.7}, 0.0));
+    EXPECT_TRUE(in_some_cell(tracked_two, {0.5, 0.0, 0.0}, 0.0));
+}
+
 /// First hits with and without the octree agree on rays through the bear.
 TEST(Octree, RaysOverCellsFindTheSameFirstHits) {
     for (const Method method : {Method::Interval, Method::Sphere, Method::Lg}) {

@@ -13,6 +13,7 @@
 #include <optional>
 #include <thread>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/lipschitz.hpp"
@@ -26,12 +27,14 @@ std::string_view partition_name(Partition partition) {
         case Partition::None: return "none";
         case Partition::Lipschitz: return "lipschitz";
         case Partition::VertexSign: return "vertex-sign";
+        case Partition::SeedFill: return "seed-fill";
     }
     return "?";
 }
 
 std::span<const Partition> all_partitions() {
-    static constexpr Partition all[] = {Partition::Auto, Partition::None, Partition::Lipschitz, Partition::VertexSign};
+    static constexpr Partition all[] = {Partition::Auto, Partition::None, Partition::Lipschitz, Partition::VertexSign,
+                                        Partition::SeedFill};
     return all;
 }
 
@@ -242,6 +245,14 @@ Octree::Octree(const Tape& tape, const Box3& box, const OctreeSettings& settings
     const auto start = std::chrono::steady_clock::now();
     OctreeSettings s = settings;
     s.max_depth = std::clamp(s.max_depth, 0, max_supported_depth);
+    if (s.rule == Partition::SeedFill) build_by_seed_fill(s);
+    else build_by_subdivision(s);
+    finish_stats(s, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+void Octree::build_by_subdivision(const OctreeSettings& s) {
+    const Tape& tape = *source_;
+    const Box3& box = root_;
     const int threads = s.threads > 0 ? s.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::atomic<std::size_t> cell_count{0}, stored{0};
     std::vector<std::unique_ptr<OctreeBuilder>> builders;
@@ -320,8 +331,105 @@ Octree::Octree(const Tape& tape, const Box3& box, const OctreeSettings& settings
         nodes_[tasks[i].node] = n;
     }
     boxes_ = std::move(boxes);
+}
 
-    // The statistics.
+void Octree::build_by_seed_fill(const OctreeSettings& s) {
+    const int depth = s.max_depth;
+    const std::int64_t n = std::int64_t{1} << depth;
+    // A cell (i, j, k) of the finest grid, by halving as the walk does, so
+    // that neighbours share their faces exactly.
+    const auto cell_box = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+        Box3 b = root_;
+        for (int level = depth - 1; level >= 0; --level)
+            b = child_box(b, static_cast<int>(((i >> level) & 1) | (((j >> level) & 1) << 1) | (((k >> level) & 1) << 2)));
+        return b;
+    };
+    const auto key = [n](std::int64_t i, std::int64_t j, std::int64_t k) {
+        return static_cast<std::uint64_t>((i * (n + 1) + j) * (n + 1) + k);
+    };
+    // The sign of f at each grid corner, evaluated once.
+    Evaluator<double> f(*source_);
+    std::unordered_map<std::uint64_t, int> corner_sign;
+    const auto sign_at = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+        const auto [it, fresh] = corner_sign.try_emplace(key(i, j, k), 0);
+        if (fresh) {
+            const Box3 b = cell_box(std::min(i, n - 1), std::min(j, n - 1), std::min(k, n - 1));
+            const double v = f(i == n ? b.hi.x : b.lo.x, j == n ? b.hi.y : b.lo.y, k == n ? b.hi.z : b.lo.z);
+            it->second = v < 0.0 ? -1 : (v > 0.0 ? 1 : 0);
+        }
+        return it->second;
+    };
+    const auto straddles = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+        bool negative = false, positive = false;
+        for (int c = 0; c < 8; ++c) {
+            const int v = sign_at(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+            negative |= v < 0;
+            positive |= v > 0;
+        }
+        return negative && positive;
+    };
+
+    // The seed: the first straddling cell on the three axis lines through the centre.
+    struct Cell {
+        std::int64_t i, j, k;
+    };
+    std::optional<Cell> seed;
+    const std::int64_t m = n / 2;
+    for (std::int64_t t = 0; t < n && !seed; ++t)
+        for (const Cell c : {Cell{t, m, m}, Cell{m, t, m}, Cell{m, m, t}})
+            if (!seed && straddles(c.i, c.j, c.k)) seed = c;
+
+    // The seed fill over face neighbours, up to the cell cap.
+    std::vector<Cell> kept, pending;
+    std::unordered_set<std::uint64_t> visited;
+    if (seed) {
+        pending.push_back(*seed);
+        visited.insert(key(seed->i, seed->j, seed->k));
+    }
+    while (!pending.empty() && kept.size() < s.max_cells) {
+        const Cell c = pending.back();
+        pending.pop_back();
+        if (!straddles(c.i, c.j, c.k)) continue;
+        kept.push_back(c);
+        for (int axis = 0; axis < 3; ++axis) {
+            for (const int step : {-1, 1}) {
+                Cell next = c;
+                (axis == 0 ? next.i : axis == 1 ? next.j : next.k) += step;
+                if (next.i < 0 || next.j < 0 || next.k < 0 || next.i >= n || next.j >= n || next.k >= n) continue;
+                if (visited.insert(key(next.i, next.j, next.k)).second) pending.push_back(next);
+            }
+        }
+    }
+
+    // The kept cells as leaves of the octree, each with its tape pruned to it.
+    std::atomic<std::size_t> cell_count{0}, stored{0};
+    OctreeSettings leaf_settings = s;
+    leaf_settings.rule = Partition::Lipschitz;
+    OctreeBuilder builder(*source_, leaf_settings, pad_, cell_count, stored);
+    nodes_.assign(1, Node{});
+    for (const Cell& c : kept) {
+        std::uint32_t node = 0;
+        for (int level = depth - 1; level >= 0; --level) {
+            if (nodes_[node].kind == Kind::Empty) {
+                nodes_[node] = {Kind::Inner, static_cast<std::uint32_t>(nodes_.size())};
+                nodes_.resize(nodes_.size() + 8);
+            }
+            const int child =
+                static_cast<int>(((c.i >> level) & 1) | (((c.j >> level) & 1) << 1) | (((c.k >> level) & 1) << 2));
+            node = nodes_[node].index + static_cast<std::uint32_t>(child);
+        }
+        const Box3 box = cell_box(c.i, c.j, c.k);
+        const OctreeBuilder::Classified pruned = builder.classify(box, depth, *source_);
+        const auto ref = builder.store(*pruned.tape, source_->clauses().size());
+        nodes_[node] = builder.leaf(box, *pruned.tape, ref.value_or(OctreeCell::full_tape));
+    }
+    cells_ = std::move(builder.cells);
+    boxes_ = std::move(builder.boxes);
+    tapes_ = std::move(builder.tapes);
+}
+
+void Octree::finish_stats(const OctreeSettings& s, double build_seconds) {
+    const Tape& tape = *source_;
     stats_.cells = cells_.size();
     stats_.nodes = nodes_.size();
     stats_.full_clauses = tape.clauses().size();
@@ -343,7 +451,7 @@ Octree::Octree(const Tape& tape, const Box3& box, const OctreeSettings& settings
                    stats_.stored_clauses * (sizeof(Clause) + sizeof(ClauseOperands));
     for (const Tape& t : tapes_) stats_.bytes += t.constants().size() * sizeof(std::pair<std::uint32_t, double>);
     stats_.depth = s.max_depth;
-    stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats_.build_seconds = build_seconds;
 }
 
 }  // namespace zeroset

@@ -9,10 +9,14 @@
 //    cell's own Lipschitz bound and r its half-diagonal; a cell whose
 //    corners differ in sign is kept without those tests. Sound: no surface
 //    point is ever in a discarded cell.
-//  - VertexSign (Bloomenthal, §6.2): a cell is kept only when its corners
-//    differ in sign (after two levels of uniform subdivision). Cheap, but
-//    it loses thin features that pass between the corners — the survey's
-//    "main flaw", kept as the alternative for comparison.
+//  - VertexSign (Bloomenthal's octree, §6.3): a cell is kept only when its
+//    corners differ in sign (after two levels of uniform subdivision).
+//    Cheap, but it loses thin features that pass between the corners — the
+//    survey's "main flaw", kept as the alternative for comparison.
+//  - SeedFill (Bloomenthal's surface tracking, §6.2): the cells of the
+//    finest grid whose corners differ in sign, found by a 3-D seed fill
+//    from a seed cell over face neighbours. It keeps only the part of the
+//    surface connected to its seed (and loses thin features too).
 // Surviving cells are subdivided to `max_depth`; the leaves are the cells.
 // Every cell is built over its box widened by a pad of 10⁻⁵ of the root's
 // diagonal (at least 64 ulps of its coordinates), and rays walk the boxes
@@ -40,7 +44,8 @@ enum class Partition : std::uint8_t {
     Auto,       // Lipschitz for tapes of at least `partition_min_clauses` clauses, else None
     None,       // the method runs over the whole bounds
     Lipschitz,  // Kalra–Barr
-    VertexSign  // Bloomenthal
+    VertexSign,  // Bloomenthal's octree
+    SeedFill     // Bloomenthal's surface tracking
 };
 
 std::string_view partition_name(Partition partition);
@@ -49,7 +54,7 @@ std::optional<Partition> partition_from_name(std::string_view name);
 std::span<const Partition> all_partitions();
 
 struct OctreeSettings {
-    Partition rule = Partition::Lipschitz;  // Lipschitz or VertexSign
+    Partition rule = Partition::Lipschitz;  // Lipschitz, VertexSign or SeedFill
     int max_depth = 6;
     /// Memory caps: cells (leaves) stop subdividing once this many exist,
     /// and pruned tapes stop being stored once they hold this many clauses
@@ -119,6 +124,10 @@ private:
         for (int axis = 0; axis < 3; ++axis) ((i >> axis) & 1 ? child.lo : child.hi)[axis] = mid[axis];
         return child;
     }
+    void build_by_subdivision(const OctreeSettings& settings);
+    /// Bloomenthal's surface tracking (octree_seed_fill.cpp).
+    void build_by_seed_fill(const OctreeSettings& settings);
+    void finish_stats(const OctreeSettings& settings, double build_seconds);
     [[nodiscard]] Box3 padded(const Box3& box, double pad) const {
         return {box.lo - Vec3d{pad, pad, pad}, box.hi + Vec3d{pad, pad, pad}};
     }
