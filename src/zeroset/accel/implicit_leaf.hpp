@@ -43,8 +43,8 @@ struct LeafDescription {
     /// Spatial partitioning of the bounds (accel/octree.hpp); Auto is
     /// resolved by resolve_partition.
     Partition partition = Partition::Auto;
-    /// The largest size of the object on screen, in pixels, that the
-    /// octree's depth is chosen for (0: 512).
+    /// The largest size of the object's bounds on screen, in pixels, that
+    /// the octree's depth is chosen for (0: 512).
     int footprint_pixels = 0;
 };
 
@@ -53,7 +53,7 @@ struct LeafDescription {
 /// An explicit choice on another method is an error (std::invalid_argument).
 inline constexpr std::size_t partition_min_clauses = 64;
 Partition resolve_partition(Partition asked, Method method, const Tape& tape);
-/// Cells about 16 pixels across at the given footprint: depth ⌈log₂(footprint/16)⌉, within [2, 8].
+/// Cells about 8 pixels across at the given footprint: depth ⌈log₂(footprint/8)⌉, within [2, 8].
 int octree_depth_for(int footprint_pixels);
 
 /// A thread's evaluators and root finder for one leaf.

@@ -194,9 +194,13 @@ public:
         cell.tape = ref;
         const Tape& walked = ref == OctreeCell::full_tape ? source_ : tapes[ref];
         cell.can_prune = has_choices(walked);
-        cell.lipschitz = static_cast<float>(lipschitz(tape, pad(box)));
-        if (std::isfinite(cell.lipschitz) && cell.lipschitz > 0.0f)
-            cell.lipschitz = std::nextafter(cell.lipschitz, std::numeric_limits<float>::infinity());
+        // L for the statistics, on a sample of the cells: it is the build's
+        // costliest evaluation, and rays compute their own per segment.
+        if (cells.size() % lipschitz_sample == 0) {
+            cell.lipschitz = static_cast<float>(lipschitz(tape, pad(box)));
+            if (std::isfinite(cell.lipschitz) && cell.lipschitz > 0.0f)
+                cell.lipschitz = std::nextafter(cell.lipschitz, std::numeric_limits<float>::infinity());
+        }
         cells.push_back(cell);
         boxes.push_back(box);
         cell_count_.fetch_add(1);
@@ -438,9 +442,9 @@ void Octree::finish_stats(const OctreeSettings& s, double build_seconds) {
     for (const OctreeCell& c : cells_) {
         clause_sum += static_cast<double>(tape_of(c).clauses().size());
         if (std::isfinite(c.lipschitz)) finite.push_back(c.lipschitz);
+        if (std::isinf(c.lipschitz)) ++stats_.unbounded_cells;
     }
     for (const Tape& t : tapes_) stats_.stored_clauses += t.clauses().size();
-    stats_.unbounded_cells = cells_.size() - finite.size();
     stats_.mean_cell_clauses = cells_.empty() ? 0.0 : clause_sum / static_cast<double>(cells_.size());
     std::sort(finite.begin(), finite.end());
     if (!finite.empty()) {

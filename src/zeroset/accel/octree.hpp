@@ -64,12 +64,17 @@ struct OctreeSettings {
     int threads = 0;  // 0: all cores
 };
 
+/// The statistics' Lipschitz bounds are computed for one cell in this many.
+inline constexpr std::size_t lipschitz_sample = 8;
+
 /// A surviving leaf cell.
 struct OctreeCell {
     static constexpr std::uint32_t full_tape = std::numeric_limits<std::uint32_t>::max();
     std::uint32_t tape = full_tape;  // index into Octree::tapes(), or the source tape
     bool can_prune = false;          // its tape still has a min or max
-    float lipschitz = 0.0f;          // L over the cell, rounded up (+∞ if unbounded)
+    /// L over the cell, rounded up (+∞ if unbounded), for one cell in
+    /// `lipschitz_sample`; NaN for the others.
+    float lipschitz = std::numeric_limits<float>::quiet_NaN();
 };
 
 struct OctreeStats {
@@ -79,9 +84,9 @@ struct OctreeStats {
     std::size_t bytes = 0;           // nodes, cells and stored tapes
     std::size_t full_clauses = 0;    // the source tape's
     double mean_cell_clauses = 0;    // over the cells
-    double median_lipschitz = 0;     // over the cells with finite L
+    double median_lipschitz = 0;     // over the sampled cells with finite L
     double p90_lipschitz = 0;
-    std::size_t unbounded_cells = 0;  // L = ∞
+    std::size_t unbounded_cells = 0;  // sampled cells with L = ∞
     double build_seconds = 0;
     int depth = 0;
 };

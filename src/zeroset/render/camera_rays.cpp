@@ -1,6 +1,7 @@
 // Pinhole camera basis from from/at/up and the vertical field of view.
 #include "zeroset/render/camera_rays.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -13,6 +14,20 @@ CameraRays::CameraRays(const Camera& camera, int width, int height)
     up_ = cross(forward_, right_);
     half_height_ = std::tan(camera.fov_degrees * std::numbers::pi / 360.0);
     half_width_ = half_height_ * static_cast<double>(width) / static_cast<double>(height);
+}
+
+double CameraRays::pixel_extent(std::span<const Vec3d> points) const {
+    double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
+    for (const Vec3d& p : points) {
+        const Vec3d v = p - eye_;
+        const double depth = dot(v, forward_);
+        if (!(depth > 0.0)) return INFINITY;
+        const double x = dot(v, right_) / (depth * half_width_) * 0.5 * width_;
+        const double y = dot(v, up_) / (depth * half_height_) * 0.5 * height_;
+        x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
+        y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+    }
+    return std::max(x_hi - x_lo, y_hi - y_lo);
 }
 
 Ray CameraRays::ray(int px, int py, double sx, double sy) const {

@@ -2,6 +2,8 @@
 // sub-pixel offset in [0,1)² maps to a unit-direction ray from the eye.
 #pragma once
 
+#include <span>
+
 #include "zeroset/math/ray.hpp"
 #include "zeroset/scene/scene.hpp"
 
@@ -13,6 +15,9 @@ public:
 
     /// The ray through image position (px + sx, py + sy); y grows downwards.
     [[nodiscard]] Ray ray(int px, int py, double sx, double sy) const;
+    /// The larger side, in pixels, of the rectangle the points project to
+    /// (beyond the image too); +∞ when one is not in front of the eye.
+    [[nodiscard]] double pixel_extent(std::span<const Vec3d> points) const;
 
 private:
     Vec3d eye_, forward_, right_, up_;

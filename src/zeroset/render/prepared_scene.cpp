@@ -3,6 +3,9 @@
 // a material on a node an instance around its primitive.
 #include "zeroset/render/prepared_scene.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 
 #include <algorithm>
@@ -12,6 +15,7 @@
 #include "zeroset/accel/group.hpp"
 #include "zeroset/accel/half_space.hpp"
 #include "zeroset/accel/instance.hpp"
+#include "zeroset/render/camera_rays.hpp"
 #include "zeroset/render/render_settings.hpp"
 
 namespace zeroset {
@@ -19,11 +23,31 @@ namespace zeroset {
 PreparedScene::PreparedScene(const Scene& scene, const ObjectOverrides& overrides)
     : scene_(&scene), overrides_(overrides), lights_(scene.lights) {
     if (lights_.empty()) lights_.push_back({Light::Kind::Point, scene.camera.from, {}, {1.0, 1.0, 1.0}, true});
+    if (overrides.image_width > 0 && overrides.image_height > 0) measure_footprints(scene);
     std::vector<std::shared_ptr<const Primitive>> top;
     top.reserve(scene.nodes.size());
     for (const SceneNodePtr& node : scene.nodes) top.push_back(prepare(node));
     root_ = top.size() == 1 ? top.front() : std::make_shared<Group>(std::move(top));
     prepared_.clear();
+}
+
+void PreparedScene::measure_footprints(const Scene& scene) {
+    // The corners of each placement's bounds, projected; the largest over
+    // the placements of a shared object. An object reaching behind the eye,
+    // or far past the image, counts as twice the image's side.
+    const int side = std::max(overrides_.image_width, overrides_.image_height);
+    const CameraRays camera(scene.camera, overrides_.image_width, overrides_.image_height);
+    for (const PlacedObject& placed : placed_objects(scene)) {
+        if (placed.object().bounds.kind == Bounds::Kind::None) continue;
+        const Box3 box = placed.object().bounds.enclosing_box();
+        std::array<Vec3d, 8> corners;
+        for (int c = 0; c < 8; ++c)
+            corners[static_cast<std::size_t>(c)] = placed.to_scene.transform_point(
+                {c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y, c & 4 ? box.hi.z : box.lo.z});
+        const double extent = std::min(camera.pixel_extent(corners), 2.0 * side);
+        int& footprint = footprints_[placed.node];
+        footprint = std::max(footprint, static_cast<int>(std::ceil(extent)));
+    }
 }
 
 const Material& PreparedScene::material(MaterialId id) const {
@@ -83,7 +107,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             d.solver = overrides_.solver.value_or(o.solver);
             d.normals = overrides_.normals.value_or(o.normals);
             d.partition = overrides_.partition.value_or(o.partition);
-            d.footprint_pixels = overrides_.footprint_pixels;
+            if (const auto f = footprints_.find(node.get()); f != footprints_.end()) d.footprint_pixels = f->second;
             d.material = around;
             around = no_material;  // the leaf's own
             try {

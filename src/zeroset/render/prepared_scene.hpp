@@ -22,8 +22,10 @@ struct ObjectOverrides {
     std::optional<PolynomialSolver> solver;
     std::optional<NormalMode> normals;
     std::optional<Partition> partition;
-    /// The image's larger side: what the octrees' depth is chosen for.
-    int footprint_pixels = 0;
+    /// The image's size: the octrees' depth is chosen for each object's
+    /// size on it (0: a default of 512 pixels).
+    int image_width = 0;
+    int image_height = 0;
 };
 
 class PreparedScene {
@@ -50,6 +52,8 @@ public:
 
 private:
     std::shared_ptr<const Primitive> prepare(const SceneNodePtr& node);
+    /// footprints_ from the camera and the image size.
+    void measure_footprints(const Scene& scene);
     MaterialId material_id(const std::optional<Material>& material);
 
     const Scene* scene_;
@@ -60,6 +64,7 @@ private:
     std::vector<const ImplicitLeaf*> leaves_;
     int planes_ = 0;
     std::unordered_map<const SceneNode*, std::shared_ptr<const Primitive>> prepared_;  // by node, for sharing
+    std::unordered_map<const SceneNode*, int> footprints_;  // an object's largest size on screen, in pixels
     std::shared_ptr<const Primitive> root_;
 };
 
