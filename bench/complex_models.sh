@@ -16,28 +16,30 @@ trap 'rm -rf "$work"' EXIT
 # The median of the numbers on stdin.
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 
-# The median render time of a scene, and the summary line of the last run.
+# Runs a command n times and prints the median of the time that the sed
+# pattern extracts from its stderr; the last stderr stays in $work/log.txt.
+timed() {
+  local n=$1 pattern=$2
+  shift 2
+  for _ in $(seq "$n"); do
+    "$@" 2> "$work/log.txt"
+    sed -n "$pattern" "$work/log.txt"
+  done | median
+}
+
 render_row() {
   local label=$1 n=$2
   shift 2
-  local times=()
-  for _ in $(seq "$n"); do
-    ./build/zeroset render "$@" --threads "$threads" -o "$work/out.png" 2> "$work/log.txt"
-    times+=("$(sed -n 's/.*: \([0-9.]*\) s (prepare.*/\1/p' "$work/log.txt")")
-  done
-  printf '| %s | %s s | %s |\n' "$label" "$(printf '%s\n' "${times[@]}" | median)" \
-    "$(sed -n 's/.*objects: //p' "$work/log.txt")"
+  local t
+  t=$(timed "$n" 's/.*: \([0-9.]*\) s (prepare.*/\1/p' ./build/zeroset render "$@" --threads "$threads" -o "$work/out.png")
+  printf '| %s | %s s | %s |\n' "$label" "$t" "$(sed -n 's/.*objects: //p' "$work/log.txt")"
 }
 
 slice_row() {
   local label=$1 t=$2
   shift 2
-  local times=()
-  for _ in $(seq "$runs"); do
-    ./build/zeroset slice "$@" --threads "$t" -o "$work/slice.png" 2> "$work/log.txt"
-    times+=("$(sed -n 's/.* in \([0-9.]*\) ms.*/\1/p' "$work/log.txt")")
-  done
-  printf '| %s, %s thread(s) | %s ms | |\n' "$label" "$t" "$(printf '%s\n' "${times[@]}" | median)"
+  printf '| %s, %s thread(s) | %s ms | |\n' "$label" "$t" \
+    "$(timed "$runs" 's/.* in \([0-9.]*\) ms.*/\1/p' ./build/zeroset slice "$@" --threads "$t" -o "$work/slice.png")"
 }
 
 python3 bench/models/molecule.py 50 > "$work/molecule.zs"

@@ -58,7 +58,7 @@ Partition resolve_partition(Partition asked, Method method, const Tape& tape) {
 int octree_depth_for(int footprint_pixels) {
     const int footprint = footprint_pixels > 0 ? footprint_pixels : 512;
     const int depth = static_cast<int>(std::ceil(std::log2(std::max(1.0, footprint / 8.0))));
-    return std::clamp(depth, 2, 8);
+    return std::clamp(depth, 2, 6);
 }
 
 ImplicitLeaf::ImplicitLeaf(std::size_t id, LeafDescription description)
