@@ -9,7 +9,7 @@ namespace zeroset::cli {
 
 ProgressBar::ProgressBar() : enabled_(isatty(STDERR_FILENO) == 1) {}
 
-void ProgressBar::update(int done, int total) {
+void ProgressBar::update(int done, int total, const char* label) {
     if (!enabled_ || total <= 0) return;
     const auto now = std::chrono::steady_clock::now();
     if (done < total && now - last_draw_ < std::chrono::milliseconds(100)) return;
@@ -18,7 +18,7 @@ void ProgressBar::update(int done, int total) {
     const int filled = done * width / total;
     std::string bar(static_cast<std::size_t>(filled), '#');
     bar.resize(width, '.');
-    std::fprintf(stderr, "\rrendering [%s] %3d%%", bar.c_str(), done * 100 / total);
+    std::fprintf(stderr, "\r%-16s [%s] %3d%%", label, bar.c_str(), done * 100 / total);
     std::fflush(stderr);
 }
 

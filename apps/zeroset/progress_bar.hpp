@@ -9,8 +9,9 @@ class ProgressBar {
 public:
     ProgressBar();
     [[nodiscard]] bool enabled() const { return enabled_; }
-    /// Redraws the bar (at most a few times a second) for done of total.
-    void update(int done, int total);
+    /// Redraws the bar (at most a few times a second) for done of total,
+    /// after the label.
+    void update(int done, int total, const char* label = "rendering");
     /// Erases the bar's line.
     void finish();
 

@@ -107,7 +107,10 @@ int render_command(const std::vector<std::string>& args) {
 
     const bool quiet = options.has("-q") || options.has("--quiet");
     ProgressBar bar;
-    if (!quiet && bar.enabled()) settings.on_progress = [&bar](int done, int total) { bar.update(done, total); };
+    if (!quiet && bar.enabled()) {
+        settings.on_progress = [&bar](int done, int total) { bar.update(done, total); };
+        settings.on_prepare_progress = [&bar](int done, int total) { bar.update(done, total, "building octree"); };
+    }
     RenderResult result = [&] {
         try {
             return render(scene, settings);

@@ -160,7 +160,7 @@ TEST(Octree, SeedFillTracksTheSeedsComponentOnly) {
                     bool negative = false, positive = false;
                     for (int c = 0; c < 8; ++c) {
                         const double v = e(-1 + h * (i + (c & 1)), -1 + h * (j + ((c >> 1) & 1)), -1 + h * (k + (c >> 2)));
-                        negative |= v < 0;
+                        negative |= v <= 0;  // on the surface counts as inside, as in the seed fill
                         positive |= v > 0;
                     }
                     count += negative && positive;

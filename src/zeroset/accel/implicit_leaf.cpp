@@ -75,6 +75,7 @@ ImplicitLeaf::ImplicitLeaf(std::size_t id, LeafDescription description)
         OctreeSettings octree;
         octree.rule = partition_;
         octree.max_depth = octree_depth_for(description_.footprint_pixels);
+        octree.on_progress = description_.on_octree_progress;
         octree_.emplace(tape_, region_.box(), octree);
     }
 }

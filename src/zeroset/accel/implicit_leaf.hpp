@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +47,8 @@ struct LeafDescription {
     /// The largest size of the object's bounds on screen, in pixels, that
     /// the octree's depth is chosen for (0: 512).
     int footprint_pixels = 0;
+    /// Told how the octree's build goes (OctreeSettings::on_progress).
+    std::function<void(int, int)> on_octree_progress;
 };
 
 /// Auto → Lipschitz for the methods that bound f over cells (interval, LG,

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <thread>
 #include <unordered_map>
@@ -65,8 +66,12 @@ bool same_tape(const Tape& p, const Tape& q) {
         return c.op == d.op && c.out == d.out && c.a == d.a && c.b == d.b;
     };
     const auto same_operands = [](const ClauseOperands& c, const ClauseOperands& d) { return c.a == d.a && c.b == d.b; };
+    const auto same_constant = [](const std::pair<std::uint32_t, double>& c, const std::pair<std::uint32_t, double>& d) {
+        return c.first == d.first && std::bit_cast<std::uint64_t>(c.second) == std::bit_cast<std::uint64_t>(d.second);
+    };
     return p.result_slot() == q.result_slot() && p.result_value() == q.result_value() && p.slot_count() == q.slot_count() &&
-           std::ranges::equal(p.clauses(), q.clauses(), same_clause) && p.constants() == q.constants() &&
+           std::ranges::equal(p.clauses(), q.clauses(), same_clause) &&
+           std::ranges::equal(p.constants(), q.constants(), same_constant) &&
            std::ranges::equal(p.operand_values(), q.operand_values(), same_operands);
 }
 
@@ -196,14 +201,13 @@ public:
         cell.can_prune = has_choices(walked);
         // L for the statistics, on a sample of the cells: it is the build's
         // costliest evaluation, and rays compute their own per segment.
-        if (cells.size() % lipschitz_sample == 0) {
+        if (cell_count_.fetch_add(1) % lipschitz_sample == 0) {
             cell.lipschitz = static_cast<float>(lipschitz(tape, pad(box)));
             if (std::isfinite(cell.lipschitz) && cell.lipschitz > 0.0f)
                 cell.lipschitz = std::nextafter(cell.lipschitz, std::numeric_limits<float>::infinity());
         }
         cells.push_back(cell);
         boxes.push_back(box);
-        cell_count_.fetch_add(1);
         return {Octree::Kind::Leaf, static_cast<std::uint32_t>(cells.size() - 1)};
     }
 
@@ -296,10 +300,16 @@ void Octree::build_by_subdivision(const OctreeSettings& s) {
     std::vector<Node> roots(tasks.size());
     std::vector<std::size_t> owner(tasks.size());
     std::atomic<std::size_t> next_task{0};
+    std::mutex progress_mutex;
+    int tasks_done = 0;
     const auto run = [&](std::size_t t) {
         for (std::size_t i = next_task++; i < tasks.size(); i = next_task++) {
             roots[i] = builders[t]->build(tasks[i]);
             owner[i] = t;
+            if (s.on_progress) {
+                std::lock_guard lock(progress_mutex);
+                s.on_progress(++tasks_done, static_cast<int>(tasks.size()));
+            }
         }
     };
     {
@@ -352,28 +362,34 @@ void Octree::build_by_seed_fill(const OctreeSettings& s) {
         return static_cast<std::uint64_t>((i * (n + 1) + j) * (n + 1) + k);
     };
     // The sign of f at each grid corner, evaluated once.
+    constexpr int undefined = 2;
     Evaluator<double> f(*source_);
     std::unordered_map<std::uint64_t, int> corner_sign;
     const auto sign_at = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
         const auto [it, fresh] = corner_sign.try_emplace(key(i, j, k), 0);
         if (fresh) {
             const Box3 b = cell_box(std::min(i, n - 1), std::min(j, n - 1), std::min(k, n - 1));
+            // On the surface counts as inside (the solid is f ≤ 0), so a
+            // surface lying on a grid plane still has straddling cells.
             const double v = f(i == n ? b.hi.x : b.lo.x, j == n ? b.hi.y : b.lo.y, k == n ? b.hi.z : b.lo.z);
-            it->second = v < 0.0 ? -1 : (v > 0.0 ? 1 : 0);
+            it->second = v != v ? undefined : (v <= 0.0 ? -1 : 1);
         }
         return it->second;
     };
+    // A cell with a NaN corner is kept too, so that rays still report it.
     const auto straddles = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
         bool negative = false, positive = false;
         for (int c = 0; c < 8; ++c) {
             const int v = sign_at(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+            if (v == undefined) return true;
             negative |= v < 0;
             positive |= v > 0;
         }
         return negative && positive;
     };
 
-    // The seed: the first straddling cell on the three axis lines through the centre.
+    // The seed: the first straddling cell on the three axis lines through
+    // the centre, else the first of the whole grid in scan order.
     struct Cell {
         std::int64_t i, j, k;
     };
@@ -382,6 +398,10 @@ void Octree::build_by_seed_fill(const OctreeSettings& s) {
     for (std::int64_t t = 0; t < n && !seed; ++t)
         for (const Cell c : {Cell{t, m, m}, Cell{m, t, m}, Cell{m, m, t}})
             if (!seed && straddles(c.i, c.j, c.k)) seed = c;
+    for (std::int64_t i = 0; i < n && !seed; ++i)
+        for (std::int64_t j = 0; j < n && !seed; ++j)
+            for (std::int64_t k = 0; k < n && !seed; ++k)
+                if (straddles(i, j, k)) seed = Cell{i, j, k};
 
     // The seed fill over face neighbours, up to the cell cap.
     std::vector<Cell> kept, pending;

@@ -16,7 +16,8 @@
 //  - SeedFill (Bloomenthal's surface tracking, §6.2): the cells of the
 //    finest grid whose corners differ in sign, found by a 3-D seed fill
 //    from a seed cell over face neighbours. It keeps only the part of the
-//    surface connected to its seed (and loses thin features too).
+//    surface connected to its seed, loses what the corners miss (thin
+//    features, caps bulging into a cell), and past the cell cap the rest.
 // Surviving cells are subdivided to `max_depth`; the leaves are the cells.
 // Every cell is built over its box widened by a pad of 10⁻⁵ of the root's
 // diagonal (at least 64 ulps of its coordinates), and rays walk the boxes
@@ -28,6 +29,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -62,6 +64,9 @@ struct OctreeSettings {
     std::size_t max_cells = std::size_t{1} << 18;
     std::size_t max_stored_clauses = std::size_t{1} << 22;
     int threads = 0;  // 0: all cores
+    /// Called with (subtrees built, subtrees in all) as a subdividing build
+    /// goes, from one thread at a time; may be empty.
+    std::function<void(int, int)> on_progress;
 };
 
 /// The statistics' Lipschitz bounds are computed for one cell in this many.

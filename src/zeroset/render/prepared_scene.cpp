@@ -44,7 +44,9 @@ void PreparedScene::measure_footprints(const Scene& scene) {
         for (int c = 0; c < 8; ++c)
             corners[static_cast<std::size_t>(c)] = placed.to_scene.transform_point(
                 {c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y, c & 4 ? box.hi.z : box.lo.z});
-        const double extent = std::min(camera.pixel_extent(corners), 2.0 * side);
+        double extent = camera.pixel_extent(corners);
+        if (!(extent >= 0.0)) extent = 2.0 * side;  // NaN: a degenerate camera basis
+        extent = std::clamp(extent, 1.0, 2.0 * side);
         int& footprint = footprints_[placed.node];
         footprint = std::max(footprint, static_cast<int>(std::ceil(extent)));
     }
@@ -108,6 +110,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             d.normals = overrides_.normals.value_or(o.normals);
             d.partition = overrides_.partition.value_or(o.partition);
             if (const auto f = footprints_.find(node.get()); f != footprints_.end()) d.footprint_pixels = f->second;
+            d.on_octree_progress = overrides_.on_progress;
             d.material = around;
             around = no_material;  // the leaf's own
             try {

@@ -5,6 +5,7 @@
 // every render thread.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <unordered_map>
@@ -26,6 +27,8 @@ struct ObjectOverrides {
     /// size on it (0: a default of 512 pixels).
     int image_width = 0;
     int image_height = 0;
+    /// Told how long preparations (octree builds) go: (parts done, parts in all).
+    std::function<void(int, int)> on_progress;
 };
 
 class PreparedScene {

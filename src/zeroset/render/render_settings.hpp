@@ -32,6 +32,9 @@ struct RenderSettings {
     /// Called after every finished tile with (tiles done, tiles in all), from
     /// one thread at a time.
     std::function<void(int, int)> on_progress;
+    /// Called as an object's octree is built, before tracing, with (parts
+    /// done, parts in all), from one thread at a time.
+    std::function<void(int, int)> on_prepare_progress;
 };
 
 /// A render that cannot be done (bad settings, a scene that evaluates to NaN…).

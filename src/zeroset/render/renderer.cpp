@@ -164,7 +164,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
 
     const PreparedScene prepared(scene, {settings.method, settings.solver, settings.normals, settings.partition,
-                                         settings.width, settings.height});
+                                         settings.width, settings.height, settings.on_prepare_progress});
     const CameraRays camera(scene.camera, settings.width, settings.height);
     const double prepare_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::vector<Tile> tiles = make_tiles(settings.width, settings.height);
