@@ -101,6 +101,11 @@ SurfaceRef ImplicitLeaf::surface_at(const Ray& ray, double t, BoundaryKind kind)
     return s;
 }
 
+void ImplicitLeaf::enter_cell(LeafScratch& leaf, const OctreeCell& cell, TraceScratch& scratch) const {
+    ++scratch.counters.cell_visits;
+    leaf.h.set_base_tape(octree_->tape_of(cell), cell.can_prune);
+}
+
 HitResult ImplicitLeaf::first_hit_in_cells(LeafScratch& leaf, Span span, TraceScratch& scratch) const {
     // A ray that starts in the solid hits at once — also where that part of
     // the solid holds no surface, so no cell. NaN there fails, as unpartitioned.
@@ -109,15 +114,14 @@ HitResult ImplicitLeaf::first_hit_in_cells(LeafScratch& leaf, Span span, TraceSc
     if (start <= 0.0) return {span.t0, HitStatus::Ok};
     HitResult hit;
     octree_->walk(leaf.h.ray(), span, [&](Span cell_span, const OctreeCell& cell) {
-        ++scratch.counters.cell_visits;
-        leaf.h.set_base_tape(octree_->tape_of(cell), cell.can_prune);
+        enter_cell(leaf, cell, scratch);
         hit = leaf.finder->first_hit(leaf.h, cell_span, scratch.counters);
         // A failure in one cell (NaN, a budget spent) fails the query, as it
         // fails a method over the whole span: a later hit is not trusted.
         if (hit.status == HitStatus::Failed) hit.t.reset();
         return hit.t.has_value() || hit.status == HitStatus::Failed;
     });
-    leaf.h.set_base_tape(tape_, leaf.h.can_prune_full());
+    leaf.h.reset_base_tape();
     return hit;
 }
 
@@ -125,13 +129,12 @@ HitStatus ImplicitLeaf::all_hits(LeafScratch& leaf, Span span, TraceScratch& scr
     if (!octree_) return leaf.finder->all_hits(leaf.h, span, leaf.roots, scratch.counters);
     HitStatus status = HitStatus::Ok;
     octree_->walk(leaf.h.ray(), span, [&](Span cell_span, const OctreeCell& cell) {
-        ++scratch.counters.cell_visits;
-        leaf.h.set_base_tape(octree_->tape_of(cell), cell.can_prune);
+        enter_cell(leaf, cell, scratch);
         if (leaf.finder->all_hits(leaf.h, cell_span, leaf.roots, scratch.counters) == HitStatus::Failed)
             status = HitStatus::Failed;
         return false;
     });
-    leaf.h.set_base_tape(tape_, leaf.h.can_prune_full());
+    leaf.h.reset_base_tape();
     return status;
 }
 
@@ -141,7 +144,8 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
     LeafScratch& leaf = scratch_for(scratch);
     const std::uint64_t nans = scratch.counters.nan_evaluations;
     leaf.h.set_ray(ray);
-    const HitResult hit = octree_ ? first_hit_in_cells(leaf, *span, scratch) : leaf.finder->first_hit(leaf.h, *span, scratch.counters);
+    const HitResult hit =
+        octree_ ? first_hit_in_cells(leaf, *span, scratch) : leaf.finder->first_hit(leaf.h, *span, scratch.counters);
     note_nan(leaf, nans, scratch);
     if (hit.status == HitStatus::Failed) ++scratch.counters.failed_queries;
     if (!hit.t) return std::nullopt;
@@ -169,8 +173,8 @@ void ImplicitLeaf::spans(const Ray& ray, double t_min, double t_max, TraceScratc
     // Cells overlap by their pad, so a root near a face may come from both:
     // roots closer than the methods' own merge width are one.
     const double merge_width = 4.0 * leaf.h.to_t(settings_.tangent_width);
-    roots.erase(std::unique(roots.begin(), roots.end(), [merge_width](double a, double b) { return b - a <= merge_width; }),
-                roots.end());
+    const auto same_root = [merge_width](double a, double b) { return b - a <= merge_width; };
+    roots.erase(std::unique(roots.begin(), roots.end(), same_root), roots.end());
     const auto event = [&](std::size_t i) { return i == 0 ? span->t0 : (i <= roots.size() ? roots[i - 1] : span->t1); };
     const std::size_t gaps = roots.size() + 1;
     const auto boundary = [&](std::size_t i) {

@@ -108,6 +108,8 @@ public:
 
 private:
     LeafScratch& scratch_for(TraceScratch& scratch) const;
+    /// Counts the cell and makes its tape the ray function's base.
+    void enter_cell(LeafScratch& leaf, const OctreeCell& cell, TraceScratch& scratch) const;
     /// The method run cell by cell along the ray, front to back.
     HitResult first_hit_in_cells(LeafScratch& leaf, Span span, TraceScratch& scratch) const;
     /// The roots in the span into leaf.roots, over the cells when partitioned.

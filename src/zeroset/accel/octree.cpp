@@ -75,11 +75,6 @@ bool same_tape(const Tape& p, const Tape& q) {
            std::ranges::equal(p.operand_values(), q.operand_values(), same_operands);
 }
 
-bool has_choices(const Tape& tape) {
-    return std::any_of(tape.clauses().begin(), tape.clauses().end(),
-                       [](const Clause& c) { return c.op == Op::Min || c.op == Op::Max; });
-}
-
 /// 10⁻⁵ of the diagonal, and at least 64 ulps of the largest coordinate.
 double cell_pad(const Box3& box) {
     const double largest = std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z), std::abs(box.hi.x),
@@ -198,7 +193,7 @@ public:
         OctreeCell cell;
         cell.tape = ref;
         const Tape& walked = ref == OctreeCell::full_tape ? source_ : tapes[ref];
-        cell.can_prune = has_choices(walked);
+        cell.can_prune = walked.has_choices();
         // L for the statistics, on a sample of the cells: it is the build's
         // costliest evaluation, and rays compute their own per segment.
         if (cell_count_.fetch_add(1) % lipschitz_sample == 0) {
@@ -217,9 +212,7 @@ public:
     std::vector<Tape> tapes;
 
 private:
-    [[nodiscard]] Box3 pad(const Box3& box) const {
-        return {box.lo - Vec3d{pad_, pad_, pad_}, box.hi + Vec3d{pad_, pad_, pad_}};
-    }
+    [[nodiscard]] Box3 pad(const Box3& box) const { return Octree::padded(box, pad_); }
     bool corners_differ(const Tape& tape, const Box3& box) {
         point_.rebind(tape);
         bool negative = false, positive = false;

@@ -138,7 +138,7 @@ private:
     /// Bloomenthal's surface tracking (octree_seed_fill.cpp).
     void build_by_seed_fill(const OctreeSettings& settings);
     void finish_stats(const OctreeSettings& settings, double build_seconds);
-    [[nodiscard]] Box3 padded(const Box3& box, double pad) const {
+    [[nodiscard]] static Box3 padded(const Box3& box, double pad) {
         return {box.lo - Vec3d{pad, pad, pad}, box.hi + Vec3d{pad, pad, pad}};
     }
 

@@ -2,6 +2,8 @@
 // slot assignment by last use.
 #include "zeroset/expr/tape.hpp"
 
+#include <algorithm>
+
 #include <unordered_map>
 
 namespace zeroset {
@@ -95,6 +97,10 @@ Tape::Tape(const Expr& root) {
     }
     result_slot_ = slot[order.size() - 1];
     result_value_ = value[order.size() - 1];
+}
+
+bool Tape::has_choices() const {
+    return std::any_of(clauses_.begin(), clauses_.end(), [](const Clause& c) { return c.op == Op::Min || c.op == Op::Max; });
 }
 
 bool Tape::is_polynomial() const {

@@ -53,6 +53,8 @@ public:
     [[nodiscard]] ValueId result_value() const { return result_value_; }
     /// True when every op is +, −, ×, neg, square or powi with n ≥ 0.
     [[nodiscard]] bool is_polynomial() const;
+    /// True when a min or max occurs: what tape pruning can remove.
+    [[nodiscard]] bool has_choices() const;
 
 private:
     friend class TapePruner;

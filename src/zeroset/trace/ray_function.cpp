@@ -11,15 +11,14 @@ namespace zeroset {
 RayFunction::RayFunction(const Tape& tape)
     : tape_(&tape), point_(tape), jet_(tape), value_enclosure_(tape), enclosure_(tape), slope_(tape), bound_(&tape),
       base_(&tape),
-      can_prune_(std::any_of(tape.clauses().begin(), tape.clauses().end(),
-                             [](const Clause& c) { return c.op == Op::Min || c.op == Op::Max; })),
+      can_prune_(tape.has_choices()),
       base_can_prune_(can_prune_) {}
 
 void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;
     const double length = std::hypot(ray.dir.x, ray.dir.y, ray.dir.z);  // no underflow for tiny directions
     dir_length_ = length > 0.0 ? rounding::up(length) : 0.0;
-    set_base_tape(*tape_, can_prune_);
+    reset_base_tape();
 }
 
 void RayFunction::set_base_tape(const Tape& tape, bool can_prune) {

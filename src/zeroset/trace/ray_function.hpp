@@ -40,6 +40,8 @@ public:
     /// from, as the full tape is after set_ray(); `can_prune` says whether
     /// it still has a min or max. It must outlive its use.
     void set_base_tape(const Tape& tape, bool can_prune);
+    /// Makes the full tape the base again, as set_ray() does.
+    void reset_base_tape() { set_base_tape(*tape_, can_prune_); }
     [[nodiscard]] const Ray& ray() const { return ray_; }
     /// |x_d|, rounded up: a length ℓ in space is ℓ / dir_length() in t.
     [[nodiscard]] double dir_length() const { return dir_length_; }
@@ -71,8 +73,6 @@ public:
     Interval prune(std::size_t depth, double a, double b, TraceCounters& counters);
     /// Whether prune() can shorten the tape: it has a min or max.
     [[nodiscard]] bool can_prune() const { return base_can_prune_; }
-    /// Whether the full tape has a min or max.
-    [[nodiscard]] bool can_prune_full() const { return can_prune_; }
     /// The box around the ray over [a, b], with the rounding of x_o + t·x_d enclosed.
     [[nodiscard]] Box3 segment_box(double a, double b) const;
     /// Goes back to the base tape: the full tape (valid everywhere) after
