@@ -76,7 +76,7 @@ int basins_command(const std::vector<std::string>& args) {
 
     const Scene scene = options.positional().empty() ? default_scene() : load_scene(options.positional()[0]);
     const PlacedObject object = find_object(scene, options.value("--object"));
-    const BasinMap map = newton_basins(Tape(object.object().surface), to_object_space(object, ray), settings);
+    const BasinMap map = newton_basins(Tape(surface_of(object.object())), to_object_space(object, ray), settings);
     write_image(map.image, output);
 
     std::string roots;

@@ -113,7 +113,7 @@ int ray_command(const std::vector<std::string>& args) {
     const Object& object = placed.object();
     const RaySubject subject{default_scene_used ? "<default>" : options.positional()[0], placed.name(), newton_from};
 
-    const Tape tape(object.surface);
+    const Tape tape(surface_of(object));
     const SearchRegion region(tape, object.bounds);
     RootFinderSettings settings = settings_for_scale(region.scale());
     settings.newton_start = subject.newton_from;
@@ -128,7 +128,7 @@ int ray_command(const std::vector<std::string>& args) {
         const PlacedObject other = find_object(*compare_scene, options.value("--compare-object"));
         if (!other.to_scene.is_identity() || !placed.to_scene.is_identity())
             throw UsageError("--compare draws both objects along one ray: neither may be transformed");
-        compare_tape.emplace(other.object().surface);
+        compare_tape.emplace(surface_of(other.object()));
         const std::string file_name = std::filesystem::path(*file).filename().string();
         compared = ComparedFunction{
             "H of " + (other.name().empty() ? file_name : other.name() + " (" + file_name + ")"), &*compare_tape};

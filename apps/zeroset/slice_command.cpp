@@ -78,7 +78,7 @@ SliceInput load_input(const std::filesystem::path& path, const Options& options)
     }
     const Scene scene = load_scene(path);
     const PlacedObject object = find_object(scene, options.value("--object"));
-    return {object.object().surface, object.object().bounds.box};
+    return {surface_of(object.object()), object.object().bounds.box};
 }
 
 /// The plane from the options, defaulting to the object's bounds when it has them.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "zeroset/accel/spans_from_roots.hpp"
 #include "zeroset/accel/trace_scratch.hpp"
 #include "zeroset/trace/choose_method.hpp"
 
@@ -175,29 +176,11 @@ void ImplicitLeaf::spans(const Ray& ray, double t_min, double t_max, TraceScratc
     const double merge_width = 4.0 * leaf.h.to_t(settings_.tangent_width);
     const auto same_root = [merge_width](double a, double b) { return b - a <= merge_width; };
     roots.erase(std::unique(roots.begin(), roots.end(), same_root), roots.end());
-    const auto event = [&](std::size_t i) { return i == 0 ? span->t0 : (i <= roots.size() ? roots[i - 1] : span->t1); };
-    const std::size_t gaps = roots.size() + 1;
-    const auto boundary = [&](std::size_t i) {
-        if (i == 0) return span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open;
-        if (i == gaps) return span->t1 < t_max ? BoundaryKind::Bounds : BoundaryKind::Open;
-        return BoundaryKind::Surface;
-    };
-    std::optional<Hit> open;
-    bool previous_inside = true;  // so that t0 is never taken for a tangent root
-    for (std::size_t i = 0; i < gaps; ++i) {
-        const double mid = 0.5 * (event(i) + event(i + 1));
-        const bool inside = leaf.h.value(mid, scratch.counters) <= 0.0;
-        if (inside && !open) open = Hit{event(i), surface_at(ray, event(i), boundary(i))};
-        if (!inside && open) {
-            out.push_back({*open, {event(i), surface_at(ray, event(i), boundary(i))}});
-            open.reset();
-        } else if (!inside && !previous_inside) {  // a root between two outside gaps: a tangent touch
-            const Hit touch{event(i), surface_at(ray, event(i), BoundaryKind::Surface)};
-            out.push_back({touch, touch});
-        }
-        previous_inside = inside;
-    }
-    if (open) out.push_back({*open, {event(gaps), surface_at(ray, event(gaps), boundary(gaps))}});
+    spans_from_roots(
+        roots, span->t0, span->t1, span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open,
+        span->t1 < t_max ? BoundaryKind::Bounds : BoundaryKind::Open,
+        [&](double t) { return leaf.h.value(t, scratch.counters) <= 0.0; },
+        [&](double t, BoundaryKind kind) { return Hit{t, surface_at(ray, t, kind)}; }, out);
     note_nan(leaf, nans, scratch);
 }
 

@@ -1,6 +1,7 @@
-// The per-thread scratch; its destructor sees the complete LeafScratch.
+// The per-thread scratch; its destructor sees the complete LeafScratch and BlobScratch.
 #include "zeroset/accel/trace_scratch.hpp"
 
+#include "zeroset/accel/blob.hpp"
 #include "zeroset/accel/implicit_leaf.hpp"
 
 namespace zeroset {

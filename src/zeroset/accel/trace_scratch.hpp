@@ -19,6 +19,7 @@ namespace zeroset {
 
 class LeafPrimitive;
 struct LeafScratch;
+struct BlobScratch;
 
 class TraceScratch {
 public:
@@ -39,6 +40,10 @@ public:
 
     /// The scratch slot of leaf `id` (empty until the leaf fills it).
     std::unique_ptr<LeafScratch>& leaf(std::size_t id) { return leaves_.at(id); }
+
+    /// The blobs' scratch (empty until a blob fills it): one for all of
+    /// them, as a blob's query never runs another's.
+    std::unique_ptr<BlobScratch>& blob() { return blob_; }
 
     /// A cleared span list for the caller's use until the lease ends; leases
     /// end in the reverse order of their start (queries nest).
@@ -70,6 +75,7 @@ public:
 
 private:
     std::vector<std::unique_ptr<LeafScratch>> leaves_;
+    std::unique_ptr<BlobScratch> blob_;
     std::array<Occluder, 64> occluders_{};
     std::vector<std::unique_ptr<SpanList>> span_pool_;
     std::size_t spans_in_use_ = 0;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "zeroset/accel/blob.hpp"
 #include "zeroset/accel/csg.hpp"
 #include "zeroset/accel/group.hpp"
 #include "zeroset/accel/half_space.hpp"
@@ -74,6 +75,28 @@ std::string PreparedScene::partition_summary() const {
     return text;
 }
 
+std::string PreparedScene::blob_summary() const {
+    std::string text;
+    for (const Blob* blob : blobs_) {
+        const BlobStats& s = blob->stats();
+        const BlobKernelInfo& kernel = blob_kernel_info(blob->model().kernel());
+        const std::string solved = kernel.polynomial.empty()
+                                       ? "interval isolation"
+                                       : "exact degree-" + std::to_string(2 * (kernel.polynomial.size() - 1)) + " polynomials, guarded";
+        char buffer[320];
+        std::snprintf(buffer, sizeof buffer, "'%s' blob: %zu %s components, %s segments, BVH %zu nodes, %.1f MB",
+                      blob->name().c_str(), s.components, std::string(kernel.name).c_str(), solved.c_str(),
+                      s.bvh_nodes, static_cast<double>(s.bytes) / 1e6);
+        text += (text.empty() ? "" : "; ") + std::string(buffer);
+        if (!kernel.finite_support) {
+            std::snprintf(buffer, sizeof buffer, " (Gaussians cut off at %.3g R, below %.3g of the threshold)",
+                          s.reach_radius, blob->tolerance());
+            text += buffer;
+        }
+    }
+    return text;
+}
+
 std::vector<std::pair<std::string, int>> PreparedScene::method_counts() const {
     std::vector<std::pair<std::string, int>> counts;
     for (const Method m : all_methods()) {
@@ -81,6 +104,7 @@ std::vector<std::pair<std::string, int>> PreparedScene::method_counts() const {
         if (n > 0) counts.emplace_back(std::string(method_name(m)), static_cast<int>(n));
     }
     if (planes_ > 0) counts.emplace_back("plane", planes_);
+    if (!blobs_.empty()) counts.emplace_back("blob", static_cast<int>(blobs_.size()));
     return counts;
 }
 
@@ -101,11 +125,28 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             const Object& o = node->object;
             const std::string name = node->name.empty() ? "#" + std::to_string(leaves_.size() + 1) : node->name;
             label = "object '" + name + "'";
+            const Method method = overrides_.method.value_or(o.method);
+            if (o.blob && method == Method::Auto) {  // the blob's own exact path
+                BlobDescription b;
+                b.name = name;
+                b.model = o.blob;
+                b.material = around;
+                b.tolerance = o.blob_tolerance;
+                around = no_material;
+                try {
+                    auto blob = std::make_shared<const Blob>(std::move(b));
+                    blobs_.push_back(blob.get());
+                    primitive = std::move(blob);
+                } catch (const std::invalid_argument& e) {
+                    throw RenderError("blob '" + name + "': " + e.what());
+                }
+                break;
+            }
             LeafDescription d;
             d.name = name;
-            d.surface = o.surface;
+            d.surface = surface_of(o);
             d.bounds = o.bounds;
-            d.method = overrides_.method.value_or(o.method);
+            d.method = method;
             d.solver = overrides_.solver.value_or(o.solver);
             d.normals = overrides_.normals.value_or(o.normals);
             d.partition = overrides_.partition.value_or(o.partition);

@@ -31,6 +31,8 @@ struct ObjectOverrides {
     std::function<void(int, int)> on_progress;
 };
 
+class Blob;
+
 class PreparedScene {
 public:
     /// Throws RenderError when an object cannot be traced as asked (e.g. the
@@ -50,6 +52,10 @@ public:
     /// (depth 6, built in 0.61 s, 14 MB), 434 → 120 clauses a cell, median L 3.9";
     /// empty when no object is partitioned.
     [[nodiscard]] std::string partition_summary() const;
+    /// The blobs traced by their own path, e.g. "'cloud' blob: 1000 povray
+    /// components, exact degree-4 polynomials, guarded segments, BVH 450 nodes,
+    /// 0.3 MB"; empty when there are none.
+    [[nodiscard]] std::string blob_summary() const;
     /// The scene's lights, or — when it has none — one white point light at the camera.
     [[nodiscard]] const std::vector<Light>& lights() const { return lights_; }
 
@@ -65,6 +71,7 @@ private:
     std::vector<Material> materials_;
     Material default_material_;
     std::vector<const ImplicitLeaf*> leaves_;
+    std::vector<const Blob*> blobs_;
     int planes_ = 0;
     std::unordered_map<const SceneNode*, std::shared_ptr<const Primitive>> prepared_;  // by node, for sharing
     std::unordered_map<const SceneNode*, int> footprints_;  // an object's largest size on screen, in pixels

@@ -39,6 +39,12 @@ std::string summary_line(const RenderStats& s) {
         std::snprintf(cells, sizeof cells, "%.2f", rays ? static_cast<double>(s.counters.cell_visits) / static_cast<double>(rays) : 0.0);
         line += "; " + s.partitions + "; " + cells + " cells a ray";
     }
+    if (!s.blobs.empty()) {
+        char kernels[64];
+        const std::uint64_t rays = s.camera_rays + s.shadow_rays;
+        std::snprintf(kernels, sizeof kernels, "%.2f", rays ? static_cast<double>(s.counters.blob_kernels) / static_cast<double>(rays) : 0.0);
+        line += "; " + s.blobs + "; " + kernels + " blob components a ray";
+    }
     return line;
 }
 

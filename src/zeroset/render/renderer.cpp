@@ -224,6 +224,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     stats.prepare_seconds = prepare_seconds;
     stats.methods = prepared.method_counts();
     stats.partitions = prepared.partition_summary();
+    stats.blobs = prepared.blob_summary();
     return result;
 }
 

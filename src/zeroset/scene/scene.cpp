@@ -3,6 +3,8 @@
 
 namespace zeroset {
 
+Expr surface_of(const Object& object) { return object.blob ? object.blob->field_expression() : object.surface; }
+
 SceneNodePtr make_object_node(Object object, std::string name, std::optional<Material> material) {
     auto node = std::make_shared<SceneNode>();
     node->kind = SceneNode::Kind::Object;

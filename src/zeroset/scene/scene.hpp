@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "zeroset/expr/blob_model.hpp"
 #include "zeroset/expr/expr.hpp"
 #include "zeroset/math/mat4.hpp"
 #include "zeroset/math/vec3.hpp"
@@ -61,7 +62,14 @@ struct Object {
     PolynomialSolver solver = PolynomialSolver::Fast;  // for Method::Polynomial
     NormalMode normals = NormalMode::Analytic;
     Partition partition = Partition::Auto;  // spatial partitioning of the bounds (accel/octree.hpp)
+    /// A blob (expr/blob_model.hpp) when set: `surface` is then unused (surface_of
+    /// writes the field when a general method asks for it) and `bounds` is its reach.
+    std::shared_ptr<const BlobModel> blob;
+    double blob_tolerance = default_blinn_tolerance;  // Blinn's cut-off, relative to the threshold
 };
+
+/// The object's f: its surface, or a blob's field as an expression.
+Expr surface_of(const Object& object);
 
 struct SceneNode;
 using SceneNodePtr = std::shared_ptr<const SceneNode>;

@@ -19,8 +19,8 @@ namespace {
 constexpr std::array<std::string_view, 7> object_keys{"surface", "bounds", "method", "solver", "normals", "partition",
                                                       "material"};
 constexpr std::array<std::string_view, 5> transform_keys{"translate", "rotate", "scale", "shear", "matrix"};
-constexpr std::array<std::string_view, 6> node_keywords{"object",     "group",    "union", "intersection",
-                                                        "difference", "instance"};
+constexpr std::array<std::string_view, 7> node_keywords{"object",     "group",    "union", "intersection",
+                                                        "difference", "instance", "blob"};
 
 
 /// True when f is exactly 0 at 64 points spread over the bounds (a fixed
@@ -78,6 +78,7 @@ void SceneParser::node_statement(const NodeSink& sink) {
     const Nesting nesting(*this, keyword);
     const std::string_view k = keyword.text;
     if (k == "object") sink(object(keyword));
+    else if (k == "blob") sink(blob(keyword));
     else if (k == "group" || k == "union") sink(composite(keyword, SceneNode::Kind::Group));
     else if (k == "intersection") sink(composite(keyword, SceneNode::Kind::Intersection));
     else if (k == "difference") sink(composite(keyword, SceneNode::Kind::Difference));
@@ -162,7 +163,7 @@ bool SceneParser::child_entry(SceneNode& node) {
         loop(entry, [this, &node] {
             while (!in_->accept(TokenKind::RightBrace))
                 if (!child_entry(node))
-                    in_->fail_expected("an object, group, union, intersection, difference, instance, let, for or '}'");
+                    in_->fail_expected("an object, blob, group, union, intersection, difference, instance, let, for or '}'");
         });
         return true;
     }
@@ -191,7 +192,7 @@ void SceneParser::node_body(std::string_view what, SourceLocation opened_at, Sce
             node.material = material(entry);
             continue;
         }
-        in_->fail_expected("an object, group, union, intersection, difference, instance, let, for, a transform "
+        in_->fail_expected("an object, blob, group, union, intersection, difference, instance, let, for, a transform "
                            "(translate, rotate, scale, shear, matrix), material or '}'");
     }
 }

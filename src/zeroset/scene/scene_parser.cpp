@@ -15,8 +15,8 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 15> statement_names{
-    "image", "camera", "light",        "background", "ambient",  "let",   "include", "object",
+constexpr std::array<std::string_view, 16> statement_names{
+    "image", "camera", "light",        "background", "ambient",  "let",   "include", "object", "blob",
     "group", "union",  "intersection", "difference", "instance", "shape", "for"};
 constexpr std::array<std::string_view, 3> image_keys{"width", "height", "spp"};
 constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};

@@ -4,7 +4,8 @@
 // filling a Scene as it reads. One parser reads a whole scene, following
 // includes; expressions are read by expression_parser.hpp. The statements
 // are split over scene_parser.cpp (settings and files), scene_nodes.cpp
-// (objects and the tree) and transforms.cpp (affine maps).
+// (objects and the tree), blob_statement.cpp (blobs) and transforms.cpp
+// (affine maps).
 #pragma once
 
 #include <filesystem>
@@ -110,6 +111,13 @@ private:
     void node_statement(const NodeSink& sink);
     SceneNodePtr object(const Token& keyword);
     SceneNodePtr composite(const Token& keyword, SceneNode::Kind kind);
+
+    // blob_statement.cpp: blobs.
+    struct BlobReading;
+    SceneNodePtr blob(const Token& keyword);
+    /// Reads one entry of a blob's body into `reading`; false at none.
+    bool blob_entry(BlobReading& reading);
+    BlobComponent blob_component(const Token& keyword, BlobKernel kernel);
     SceneNodePtr instance(const Token& keyword);
     void shape();
     /// Skips a `{ … }` unread (up to its matching '}').

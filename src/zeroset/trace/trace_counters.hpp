@@ -14,6 +14,7 @@ struct TraceCounters {
     std::uint64_t nan_evaluations = 0;       // point evaluations that gave NaN
     std::uint64_t failed_queries = 0;        // ray queries a method gave up on (a budget spent), answered "no hit"
     std::uint64_t cell_visits = 0;           // octree cells a method ran in (accel/octree.hpp)
+    std::uint64_t blob_kernels = 0;          // blob components a ray came within reach of (accel/blob.hpp)
     /// Not a count: once evaluations() passes it, the subdividing methods
     /// give up (Failed) at their next segment. The renderer sets its budget
     /// here, so that one query cannot run far past it.
@@ -31,6 +32,7 @@ struct TraceCounters {
         nan_evaluations += o.nan_evaluations;
         failed_queries += o.failed_queries;
         cell_visits += o.cell_visits;
+        blob_kernels += o.blob_kernels;
         return *this;
     }
 };

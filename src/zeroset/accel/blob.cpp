@@ -1,0 +1,204 @@
+// The blob primitive: components' reach in a BVH, events along the ray,
+// segments solved front to back.
+#include "zeroset/accel/blob.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "zeroset/accel/spans_from_roots.hpp"
+#include "zeroset/accel/trace_scratch.hpp"
+
+namespace zeroset {
+
+Blob::Blob(BlobDescription description) : description_(std::move(description)) {
+    const BlobModel& m = model();
+    if (!(description_.tolerance > 0.0 && description_.tolerance < 1.0))
+        throw std::invalid_argument("a blob's tolerance must lie strictly between 0 and 1");
+    const std::optional<Box3> solid = m.solid_bounds(description_.tolerance);
+    if (!solid)
+        throw std::invalid_argument("a blob needs a component of positive strength (its field never reaches the threshold)");
+    bounds_ = *solid;
+    std::vector<Box3> boxes;
+    for (std::size_t i = 0; i < m.components().size(); ++i) {
+        const BlobComponent& c = m.components()[i];
+        const double reach = m.reach(i, description_.tolerance);
+        if (!(reach > 0.0)) continue;  // a Gaussian too weak to count anywhere
+        components_.push_back({m.to_kernel(i), reach, c.strength, c.blobbiness});
+        boxes.push_back(m.reach_box(i, reach));
+        stats_.reach_radius = std::max(stats_.reach_radius, std::sqrt(reach));
+    }
+    bvh_ = std::make_unique<Bvh>(boxes, description_.threads);
+    scale_ = std::max(bounds_.diagonal(), 1e-300);
+    const RootFinderSettings tolerances = settings_for_scale(scale_);
+    settings_ = {m.kernel(), m.threshold(), tolerances.tangent_width, tolerances.max_segments};
+    stats_.components = components_.size();
+    stats_.bvh_nodes = bvh_->node_count();
+    stats_.bytes = components_.size() * (sizeof(Component) + sizeof(Box3) + sizeof(BlobComponent)) +
+                   bvh_->node_count() * 128 + components_.size() * sizeof(std::uint32_t);
+}
+
+BlobScratch& Blob::scratch_for(TraceScratch& scratch) const {
+    std::unique_ptr<BlobScratch>& slot = scratch.blob();
+    if (!slot) slot = std::make_unique<BlobScratch>();
+    return *slot;
+}
+
+void Blob::gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, TraceScratch& scratch) const {
+    s.kernels.clear();
+    s.events.clear();
+    bvh_->traverse(ray, t_min, t_max, [&](std::uint32_t i, double limit) {
+        const Component& c = components_[i];
+        const auto k = kernel_on_ray(ray, c.to_kernel, c.reach, c.strength, c.blobbiness, i);
+        if (k && k->t_out >= t_min && k->t_in <= t_max) {
+            const auto index = static_cast<std::uint32_t>(s.kernels.size());
+            s.kernels.push_back(*k);
+            s.events.push_back({std::max(k->t_in, t_min), index, true});
+            s.events.push_back({std::min(k->t_out, t_max), index, false});
+        }
+        return limit;  // every component along the ray: the events need them all
+    });
+    scratch.counters.blob_kernels += s.kernels.size();
+    // By t; at equal t entries first, so a component's own entry precedes its exit.
+    std::sort(s.events.begin(), s.events.end(), [](const BlobScratch::Event& a, const BlobScratch::Event& b) {
+        return a.t < b.t || (a.t == b.t && a.enters && !b.enters);
+    });
+}
+
+template <class OnSegment>
+void Blob::sweep(BlobScratch& s, OnSegment&& on_segment) const {
+    s.active.clear();
+    s.position.resize(s.kernels.size());
+    const std::vector<BlobScratch::Event>& events = s.events;
+    for (std::size_t i = 0; i < events.size();) {
+        const double ta = events[i].t;
+        for (; i < events.size() && events[i].t == ta; ++i) {
+            const std::uint32_t k = events[i].kernel;
+            if (events[i].enters) {
+                s.position[k] = static_cast<std::uint32_t>(s.active.size());
+                s.active.push_back(k);
+            } else {  // swap with the last and drop it
+                const std::uint32_t at = s.position[k], last = s.active.back();
+                s.active[at] = last;
+                s.position[last] = at;
+                s.active.pop_back();
+            }
+        }
+        if (i == events.size() || s.active.empty()) continue;
+        const double tb = events[i].t;
+        if (blob_field_upper_bound(settings_, s.kernels, s.active, ta, tb) < settings_.threshold) continue;
+        if (!on_segment(ta, tb)) return;
+    }
+}
+
+double Blob::value_on_ray(const BlobScratch& s, double t) const {
+    double field = 0.0;
+    for (const KernelOnRay& k : s.kernels) {
+        if (t < k.t_in || t > k.t_out) continue;
+        const Vec3d q = k.q0 + t * k.qd;
+        field += k.strength * kernel_at(settings_.kernel, dot(q, q), k.blobbiness).value;
+    }
+    return settings_.threshold - field;
+}
+
+SurfaceRef Blob::surface_at(const Ray& ray, double t, BoundaryKind kind) const {
+    SurfaceRef s;
+    s.leaf = kind == BoundaryKind::Open ? nullptr : this;
+    s.kind = kind;
+    s.material = description_.material;
+    s.local_point = ray.at(t);
+    s.scale = scale_;
+    return s;
+}
+
+std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    BlobScratch& s = scratch_for(scratch);
+    gather(ray, t_min, t_max, s, scratch);
+    if (s.kernels.empty()) return std::nullopt;
+    const double start = value_on_ray(s, t_min);
+    if (start <= 0.0) return Hit{t_min, surface_at(ray, t_min, start == 0.0 ? BoundaryKind::Surface : BoundaryKind::Open)};
+    const BlobSegmentSolver solver(settings_);
+    std::optional<double> hit;
+    bool failed = false;
+    sweep(s, [&](double ta, double tb) {
+        s.roots.clear();
+        if (solver.roots(s.kernels, s.active, ta, tb, true, s.roots, scratch.counters) == HitStatus::Failed) {
+            failed = true;
+            return false;
+        }
+        if (!s.roots.empty()) hit = s.roots.front();
+        return !hit;
+    });
+    if (failed) {
+        ++scratch.counters.failed_queries;
+        return std::nullopt;
+    }
+    if (!hit) return std::nullopt;
+    return Hit{*hit, surface_at(ray, *hit, BoundaryKind::Surface)};
+}
+
+void Blob::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {
+    const auto span = bounds_.clip(ray, t_min, t_max);
+    if (!span) return;
+    BlobScratch& s = scratch_for(scratch);
+    gather(ray, span->t0, span->t1, s, scratch);
+    if (s.kernels.empty()) return;
+    const BlobSegmentSolver solver(settings_);
+    s.roots.clear();
+    sweep(s, [&](double ta, double tb) {
+        if (solver.roots(s.kernels, s.active, ta, tb, false, s.roots, scratch.counters) == HitStatus::Failed)
+            ++scratch.counters.failed_queries;  // the spans are those of the roots found so far
+        return true;
+    });
+    std::sort(s.roots.begin(), s.roots.end());
+    std::erase_if(s.roots, [&](double t) { return !(t > span->t0 && t < span->t1); });
+    // A root on a segment's end may come from both segments.
+    const double merge_width = 4.0 * settings_.tangent_width / length(ray.dir);
+    s.roots.erase(std::unique(s.roots.begin(), s.roots.end(), [&](double a, double b) { return b - a <= merge_width; }),
+                  s.roots.end());
+    spans_from_roots(
+        s.roots, span->t0, span->t1, span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open,
+        span->t1 < t_max ? BoundaryKind::Bounds : BoundaryKind::Open,
+        [&](double t) { return value_on_ray(s, t) <= 0.0; },
+        [&](double t, BoundaryKind kind) { return Hit{t, surface_at(ray, t, kind)}; }, out);
+}
+
+template <class Visit>
+void Blob::components_at(const Vec3d& p, Visit&& visit) const {
+    // A ray of no length at p meets the boxes that hold p.
+    bvh_->traverse(Ray{p, {0.5773, 0.5774, 0.5775}}, 0.0, 0.0, [&](std::uint32_t i, double limit) {
+        visit(components_[i]);
+        return limit;
+    });
+}
+
+double Blob::value_at(const Vec3d& p) const {
+    double field = 0.0;
+    components_at(p, [&](const Component& c) {
+        const Vec3d q = c.to_kernel.transform_point(p);
+        const double u = dot(q, q);
+        if (u <= c.reach) field += c.strength * kernel_at(settings_.kernel, u, c.blobbiness).value;
+    });
+    return settings_.threshold - field;
+}
+
+Vec3d Blob::gradient_at(const Vec3d& p) const {
+    Vec3d gradient{};
+    components_at(p, [&](const Component& c) {
+        const Vec3d q = c.to_kernel.transform_point(p);
+        const double u = dot(q, q);
+        if (u > c.reach) return;
+        // ∇u = 2·Mᵀq; f = T − Σ s·K(u)
+        gradient = gradient - (c.strength * kernel_at(settings_.kernel, u, c.blobbiness).slope * 2.0) *
+                                  c.to_kernel.transpose_transform_vector(q);
+    });
+    return gradient;
+}
+
+Vec3d Blob::local_normal(const SurfaceRef& surface, TraceScratch&) const {
+    const Vec3d g = gradient_at(surface.local_point);
+    const double n = length(g);
+    return n > 0.0 && std::isfinite(n) ? g / n : Vec3d{};
+}
+
+}  // namespace zeroset

@@ -1,0 +1,111 @@
+// Blob: a blobby object as a primitive that knows its kernels (survey §2,
+// §3.1, §3.2, §6.1). Each component's sphere (or ellipsoid) of influence —
+// where its kernel is not 0, or for Blinn's Gaussian, where it is above a
+// tolerance — sits in a BVH, so a ray meets only the components it passes
+// near. Their entry and exit events split the ray into segments with a fixed
+// set of components in reach; on each, the field is solved exactly
+// (trace/blob_segment.hpp): as a guarded polynomial in t for soft objects and
+// POV-Ray's kernel, by interval isolation for Gaussians and metaballs.
+// Segments whose field provably stays below the threshold are skipped by a
+// bound from each component's nearest approach. Normals are the exact
+// gradient of the components in reach. Cost per ray grows with the
+// components the ray meets, not with their total.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "zeroset/accel/bvh.hpp"
+#include "zeroset/accel/primitive.hpp"
+#include "zeroset/expr/blob_model.hpp"
+#include "zeroset/trace/blob_segment.hpp"
+
+namespace zeroset {
+
+struct BlobDescription {
+    std::string name;  // for messages
+    std::shared_ptr<const BlobModel> model;
+    MaterialId material = no_material;
+    /// Blinn only: the cut-off, relative to the threshold.
+    double tolerance = default_blinn_tolerance;
+    /// Threads for building the BVH (0: all cores).
+    int threads = 0;
+};
+
+/// What a thread writes while it traces a blob (one at a time: a blob's
+/// query never runs another's).
+struct BlobScratch {
+    std::vector<KernelOnRay> kernels;  // the components the ray meets
+    struct Event {
+        double t;
+        std::uint32_t kernel;  // into kernels
+        bool enters;
+    };
+    std::vector<Event> events;
+    std::vector<std::uint32_t> active;    // kernels in reach on the current segment
+    std::vector<std::uint32_t> position;  // each kernel's place in active
+    std::vector<double> roots;
+};
+
+/// What the render summary says about a blob.
+struct BlobStats {
+    std::size_t components = 0;
+    std::size_t bvh_nodes = 0;
+    std::size_t bytes = 0;      // the components, their boxes and the BVH
+    double reach_radius = 1.0;  // the largest cut-off radius over R (Blinn; 1 for the others)
+};
+
+class Blob final : public LeafPrimitive {
+public:
+    /// Throws std::invalid_argument for a tolerance outside (0, 1).
+    explicit Blob(BlobDescription description);
+
+    [[nodiscard]] Box3 bounds() const override { return bounds_; }
+    std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
+    void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
+    /// ∇f of the components in reach of the point, normalised.
+    Vec3d local_normal(const SurfaceRef& surface, TraceScratch& scratch) const override;
+    [[nodiscard]] const std::string& name() const override { return description_.name; }
+
+    [[nodiscard]] const BlobModel& model() const { return *description_.model; }
+    [[nodiscard]] const BlobStats& stats() const { return stats_; }
+    [[nodiscard]] double tolerance() const { return description_.tolerance; }
+    /// f and ∇f at a point, over the components in reach (for tests and normals).
+    [[nodiscard]] double value_at(const Vec3d& p) const;
+    [[nodiscard]] Vec3d gradient_at(const Vec3d& p) const;
+
+private:
+    /// One component, prepared.
+    struct Component {
+        Mat4 to_kernel;
+        double reach;  // u up to which it counts
+        double strength;
+        double blobbiness;
+    };
+
+    BlobScratch& scratch_for(TraceScratch& scratch) const;
+    /// The components the ray meets within [t_min, t_max], into s.kernels, and their events, sorted.
+    void gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, TraceScratch& scratch) const;
+    /// Calls on_segment(ta, tb) for each segment with components in reach
+    /// whose field may reach the threshold, front to back, with s.active
+    /// holding them; it returns false to stop.
+    template <class OnSegment>
+    void sweep(BlobScratch& s, OnSegment&& on_segment) const;
+    /// f at t over every gathered kernel in reach there.
+    [[nodiscard]] double value_on_ray(const BlobScratch& s, double t) const;
+    [[nodiscard]] SurfaceRef surface_at(const Ray& ray, double t, BoundaryKind kind) const;
+    /// Calls visit(i) for the components whose reach holds p.
+    template <class Visit>
+    void components_at(const Vec3d& p, Visit&& visit) const;
+
+    BlobDescription description_;
+    BlobSegmentSettings settings_;
+    std::vector<Component> components_;
+    Box3 bounds_;
+    double scale_ = 1.0;  // the bounds' diagonal
+    std::unique_ptr<Bvh> bvh_;
+    BlobStats stats_;
+};
+
+}  // namespace zeroset

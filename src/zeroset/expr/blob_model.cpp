@@ -1,0 +1,205 @@
+// The kernels' table and formulas, once for doubles and once for intervals,
+// and the field written as an expression.
+#include "zeroset/expr/blob_model.hpp"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace zeroset {
+
+namespace {
+
+constexpr std::array<double, 4> soft_polynomial{1.0, -22.0 / 9.0, 17.0 / 9.0, -4.0 / 9.0};
+constexpr std::array<double, 3> povray_polynomial{1.0, -2.0, 1.0};
+
+constexpr std::array<BlobKernelInfo, 4> kernels{{
+    {BlobKernel::Blinn, "blinn", "Blinn's Gaussian e^(B(u-1)) (eq. 12)", false, {}},
+    {BlobKernel::Metaball, "metaball", "Nishimura's piecewise quadratic metaball (sec. 3.1)", true, {}},
+    {BlobKernel::Soft, "soft", "Wyvill's soft-object polynomial C (eq. 23)", true, soft_polynomial},
+    {BlobKernel::PovRay, "povray", "POV-Ray's (1 - u)^2", true, povray_polynomial},
+}};
+
+/// K(u) for a number type T (double, or Interval for a point enclosure);
+/// u ≥ 0 is a point, so the pieces are chosen exactly.
+template <class T>
+T kernel_value(BlobKernel kernel, double u, double blobbiness) {
+    const T w(u);
+    switch (kernel) {
+        case BlobKernel::Blinn: return exp(T(blobbiness) * (w - T(1.0)));
+        case BlobKernel::Metaball: {
+            if (u >= 1.0) return T(0.0);
+            if (u <= 1.0 / 9.0) return T(1.0) - T(3.0) * w;
+            const T one_minus = T(1.0) - sqrt(w);
+            return T(1.5) * one_minus * one_minus;
+        }
+        case BlobKernel::Soft:
+        case BlobKernel::PovRay: {
+            if (u >= 1.0) return T(0.0);
+            const std::span<const double> c = blob_kernel_info(kernel).polynomial;
+            T sum(c.back());
+            for (std::size_t i = c.size() - 1; i-- > 0;) sum = sum * w + T(c[i]);
+            return sum;
+        }
+    }
+    return T(0.0);
+}
+
+/// dK/du for a number type T, as kernel_value.
+template <class T>
+T kernel_slope(BlobKernel kernel, double u, double blobbiness) {
+    const T w(u);
+    switch (kernel) {
+        case BlobKernel::Blinn: return T(blobbiness) * exp(T(blobbiness) * (w - T(1.0)));
+        case BlobKernel::Metaball: {
+            if (u >= 1.0) return T(0.0);
+            if (u <= 1.0 / 9.0) return T(-3.0);
+            return T(-1.5) * (T(1.0) / sqrt(w) - T(1.0));
+        }
+        case BlobKernel::Soft:
+        case BlobKernel::PovRay: {
+            if (u >= 1.0) return T(0.0);
+            const std::span<const double> c = blob_kernel_info(kernel).polynomial;
+            T sum(static_cast<double>(c.size() - 1) * c.back());
+            for (std::size_t i = c.size() - 1; i-- > 1;) sum = sum * w + T(static_cast<double>(i) * c[i]);
+            return sum;
+        }
+    }
+    return T(0.0);
+}
+
+/// The kernel of one component as an expression in the scaled squared distance u.
+Expr kernel_expression(BlobKernel kernel, const Expr& u, double blobbiness) {
+    switch (kernel) {
+        case BlobKernel::Blinn: return exp(blobbiness * (u - 1.0));
+        case BlobKernel::Metaball: {
+            // The inner piece clamped at ρ = 1/3 plus the outer piece clamped
+            // to [1/3, 1], less their common value 2/3 at ρ = 1/3: each
+            // piece is constant where the other one holds.
+            const Expr inner = 1.0 - 3.0 * min(u, Expr(1.0 / 9.0));
+            const Expr rho = min(max(sqrt(u), Expr(1.0 / 3.0)), Expr(1.0));
+            return inner + 1.5 * square(1.0 - rho) - 2.0 / 3.0;
+        }
+        case BlobKernel::Soft:
+        case BlobKernel::PovRay: {
+            const Expr w = min(u, Expr(1.0));  // K(1) = K′(1) = 0: the clamp is K's zero tail
+            const std::span<const double> c = blob_kernel_info(kernel).polynomial;
+            Expr sum(c.back());
+            for (std::size_t i = c.size() - 1; i-- > 0;) sum = sum * w + c[i];
+            return sum;
+        }
+    }
+    return Expr();
+}
+
+/// The terms summed pairwise, so that a blob of n components is an
+/// expression of depth log₂ n rather than n.
+Expr balanced_sum(std::vector<Expr>& terms, std::size_t lo, std::size_t hi) {
+    if (hi - lo == 1) return terms[lo];
+    const std::size_t mid = lo + (hi - lo) / 2;
+    return balanced_sum(terms, lo, mid) + balanced_sum(terms, mid, hi);
+}
+
+}  // namespace
+
+std::span<const BlobKernelInfo> blob_kernels() { return kernels; }
+
+const BlobKernelInfo& blob_kernel_info(BlobKernel kernel) { return kernels[static_cast<std::size_t>(kernel)]; }
+
+std::optional<BlobKernel> blob_kernel_named(std::string_view name) {
+    for (const BlobKernelInfo& k : kernels)
+        if (k.name == name) return k.kernel;
+    return std::nullopt;
+}
+
+KernelValue kernel_at(BlobKernel kernel, double u, double blobbiness) {
+    return {kernel_value<double>(kernel, u, blobbiness), kernel_slope<double>(kernel, u, blobbiness)};
+}
+
+Interval kernel_over(BlobKernel kernel, const Interval& u, double blobbiness) {
+    // Every kernel decreases in u ≥ 0.
+    return {kernel_value<Interval>(kernel, u.hi, blobbiness).lo, kernel_value<Interval>(kernel, u.lo, blobbiness).hi};
+}
+
+Interval kernel_slope_over(BlobKernel kernel, const Interval& u, double blobbiness) {
+    // Every kernel's slope increases in u ≥ 0 (it is convex there).
+    return {kernel_slope<Interval>(kernel, u.lo, blobbiness).lo, kernel_slope<Interval>(kernel, u.hi, blobbiness).hi};
+}
+
+BlobModel::BlobModel(BlobKernel kernel, double threshold, std::vector<BlobComponent> components)
+    : kernel_(kernel), threshold_(threshold), components_(std::move(components)) {
+    if (!(std::isfinite(threshold) && threshold > 0.0))
+        throw std::invalid_argument("a blob's threshold must be a positive number");
+    if (components_.empty()) throw std::invalid_argument("a blob needs at least one component");
+    to_kernel_.reserve(components_.size());
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        const BlobComponent& c = components_[i];
+        const std::string which = "component " + std::to_string(i + 1) + ": ";
+        if (!(std::isfinite(c.radius) && c.radius > 0.0))
+            throw std::invalid_argument(which + "the radius must be a positive number");
+        if (!(std::isfinite(c.strength) && c.strength != 0.0))
+            throw std::invalid_argument(which + "the strength must be a nonzero number");
+        if (kernel == BlobKernel::Blinn && !(std::isfinite(c.blobbiness) && c.blobbiness < 0.0))
+            throw std::invalid_argument(which + "Blinn's blobbiness must be a negative number");
+        if (!(std::isfinite(c.center.x) && std::isfinite(c.center.y) && std::isfinite(c.center.z)))
+            throw std::invalid_argument(which + "the center must be finite");
+        const std::optional<Mat4> inverse = c.shape.inverse();
+        if (!c.shape.is_finite() || !inverse || !(c.shape.squareness() > 1e-12))
+            throw std::invalid_argument(which + "the shape is singular (it flattens the component)");
+        // q = (1/R)·L⁻¹·(p − c)
+        to_kernel_.push_back(Mat4::scale({1.0 / c.radius, 1.0 / c.radius, 1.0 / c.radius}) * *inverse *
+                             Mat4::translate(-c.center));
+    }
+}
+
+double BlobModel::reach(std::size_t i, double tolerance) const {
+    if (blob_kernel_info(kernel_).finite_support) return 1.0;
+    const BlobComponent& c = components_[i];
+    return 1.0 + std::log(tolerance * threshold_ / std::abs(c.strength)) / c.blobbiness;
+}
+
+Box3 BlobModel::reach_box(std::size_t i, double reach) const {
+    // p = M⁻¹(q − m) over |q| ≤ √reach: the center ± √reach times the rows' lengths.
+    const Mat4 from_kernel = *to_kernel_[i].inverse();
+    const Vec3d center = from_kernel.transform_point({0.0, 0.0, 0.0});
+    const double r = std::sqrt(reach);
+    Vec3d half;
+    for (int j = 0; j < 3; ++j) {
+        const auto& row = from_kernel.m[static_cast<std::size_t>(j)];
+        half[j] = r * std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]) * (1.0 + 1e-12);
+    }
+    return {center - half, center + half};
+}
+
+std::optional<Box3> BlobModel::solid_bounds(double tolerance) const {
+    std::optional<Box3> box;
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        const double u = reach(i, tolerance);
+        if (components_[i].strength < 0.0 || !(u > 0.0)) continue;
+        const Box3 b = reach_box(i, u);
+        box = box ? Box3{min(box->lo, b.lo), max(box->hi, b.hi)} : b;
+    }
+    return box;
+}
+
+Expr BlobModel::field_expression() const {
+    std::vector<Expr> terms;
+    terms.reserve(components_.size());
+    const Expr x = var_x(), y = var_y(), z = var_z();
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        const Mat4& m = to_kernel_[i];
+        Expr u;
+        for (int row = 0; row < 3; ++row) {
+            const auto& r = m.m[static_cast<std::size_t>(row)];
+            Expr coordinate(r[3]);  // the row's terms, zeros left out (x·0 is not folded away)
+            for (int k = 0; k < 3; ++k)
+                if (r[static_cast<std::size_t>(k)] != 0.0) coordinate = coordinate + r[static_cast<std::size_t>(k)] * (k == 0 ? x : k == 1 ? y : z);
+            u = u + square(coordinate);
+        }
+        terms.push_back(components_[i].strength * kernel_expression(kernel_, u, components_[i].blobbiness));
+    }
+    return threshold_ - balanced_sum(terms, 0, terms.size());
+}
+
+}  // namespace zeroset

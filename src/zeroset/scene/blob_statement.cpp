@@ -1,0 +1,158 @@
+// `blob "name" { kernel … threshold … component { … } … }` in the scene
+// language (docs/scene-language.md#blobs): a blobby object by its kernels
+// (expr/blob_model.hpp), read into an object node whose Object carries the
+// model.
+#include <algorithm>
+#include <array>
+
+#include "zeroset/scene/scene_error.hpp"
+#include "zeroset/scene/scene_parser.hpp"
+#include "zeroset/scene/wording.hpp"
+
+namespace zeroset {
+
+namespace {
+
+constexpr std::array<std::string_view, 5> transform_keys{"translate", "rotate", "scale", "shear", "matrix"};
+constexpr std::array<std::string_view, 8> blob_keys{"kernel", "threshold", "tolerance", "component",
+                                                    "method", "normals",   "partition", "material"};
+constexpr std::array<std::string_view, 4> component_keys{"center", "radius", "strength", "blobbiness"};
+
+bool is_one_of(std::span<const std::string_view> names, std::string_view word) {
+    return std::ranges::find(names, word) != names.end();
+}
+
+}  // namespace
+
+struct SceneParser::BlobReading {
+    SceneNode& node;
+    BlobKernel kernel = BlobKernel::PovRay;
+    double threshold = 1.0;
+    std::vector<BlobComponent> components;
+    std::map<std::string_view, SourceLocation> seen;  // the keys set once
+};
+
+SceneNodePtr SceneParser::blob(const Token& keyword) {
+    if (++objects_ > limits_.objects)
+        in_->fail(keyword.where, "the scene makes more than " + std::to_string(limits_.objects) + " objects");
+    auto node = std::make_shared<SceneNode>();
+    node->kind = SceneNode::Kind::Object;
+    if (in_->at(TokenKind::String)) node->name = in_->next().text;
+    BlobReading reading{*node, BlobKernel::PovRay, 1.0, {}, {}};
+    in_->expect(TokenKind::LeftBrace);
+    while (!in_->accept(TokenKind::RightBrace)) {
+        const Token& entry = in_->peek();
+        if (entry.kind == TokenKind::End)
+            in_->fail(entry.where, "expected '}' to close the blob block opened at " + line_and_column(keyword.where) +
+                                       ", but found end of file");
+        if (!blob_entry(reading))
+            in_->fail_expected("a key (" + join_words(blob_keys, "or") + "), a transform, let, for or '}'");
+    }
+    if (reading.components.empty()) in_->fail(keyword.where, "a blob needs at least one component");
+    Object& object = node->object;
+    try {
+        object.blob = std::make_shared<const BlobModel>(reading.kernel, reading.threshold, std::move(reading.components));
+    } catch (const std::invalid_argument& e) {
+        in_->fail(keyword.where, std::string("blob: ") + e.what());
+    }
+    const std::optional<Box3> reach = object.blob->solid_bounds(object.blob_tolerance);
+    if (!reach) in_->fail(keyword.where, "a blob needs a component of positive strength (its field never reaches the threshold)");
+    object.bounds = Bounds::make_box(*reach);
+    return node;
+}
+
+bool SceneParser::blob_entry(BlobReading& reading) {
+    const Token& entry = in_->peek();
+    if (entry.kind != TokenKind::Name) return false;
+    const std::string_view word = entry.text;
+    if (word == "let") {
+        in_->next();
+        let();
+        return true;
+    }
+    if (word == "for") {
+        in_->next();
+        loop(entry, [this, &reading] {
+            while (!in_->accept(TokenKind::RightBrace))
+                if (!blob_entry(reading)) in_->fail_expected("a component, let, for or '}'");
+        });
+        return true;
+    }
+    if (is_one_of(transform_keys, word)) {
+        in_->next();
+        add_transform(entry, reading.node);
+        return true;
+    }
+    if (!is_one_of(blob_keys, word)) return false;
+    if (word != "component") {
+        if (const auto first = reading.seen.find(word); first != reading.seen.end())
+            in_->fail(entry.where, "'" + std::string(word) + "' is already set in this blob block (at " +
+                                       line_and_column(first->second) + ")");
+        if (!reading.components.empty() && word == "kernel")
+            in_->fail(entry.where, "the kernel must come before the blob's components");
+        reading.seen.emplace(word, entry.where);
+    }
+    in_->next();
+    Object& object = reading.node.object;
+    if (word == "kernel") {
+        std::vector<std::string_view> names;
+        for (const BlobKernelInfo& k : blob_kernels()) names.push_back(k.name);
+        reading.kernel = *blob_kernel_named(choice("kernel", names).text);
+    } else if (word == "threshold") {
+        const auto [t, where] = number("the threshold");
+        if (!(t > 0.0)) in_->fail(where, "the threshold must be positive");
+        reading.threshold = t;
+    } else if (word == "tolerance") {
+        const auto [t, where] = number("the tolerance");
+        if (!(t > 0.0 && t < 1.0)) in_->fail(where, "the tolerance must lie strictly between 0 and 1");
+        object.blob_tolerance = t;
+    } else if (word == "component") {
+        if (++objects_ > limits_.objects)
+            in_->fail(entry.where, "the scene makes more than " + std::to_string(limits_.objects) +
+                                       " objects and blob components");
+        reading.components.push_back(blob_component(entry, reading.kernel));
+    } else if (word == "method") {
+        object.method = method();
+    } else if (word == "normals") {
+        object.normals = normal_mode();
+    } else if (word == "partition") {
+        object.partition = partition();
+    } else {
+        reading.node.material = material(entry);
+    }
+    return true;
+}
+
+BlobComponent SceneParser::blob_component(const Token& keyword, BlobKernel kernel) {
+    BlobComponent c;
+    SceneNode shape;  // the component's transforms, checked as a node's are
+    std::vector<std::string_view> keys(component_keys.begin(), component_keys.end());
+    keys.insert(keys.end(), transform_keys.begin(), transform_keys.end());
+    block(
+        keyword, keys,
+        [&](const Token& key) {
+            if (is_one_of(transform_keys, key.text)) {
+                add_transform(key, shape);
+            } else if (key.text == "center") {
+                c.center = vector("the center").value;
+            } else if (key.text == "radius") {
+                const auto [r, where] = number("the radius");
+                if (!(r > 0.0)) in_->fail(where, "the radius must be positive");
+                c.radius = r;
+            } else if (key.text == "strength") {
+                const auto [s, where] = number("the strength");
+                if (s == 0.0) in_->fail(where, "the strength must not be 0 (leave the component out)");
+                c.strength = s;
+            } else {
+                const auto [b, where] = number("the blobbiness");
+                if (kernel != BlobKernel::Blinn) in_->fail(key.where, "blobbiness is a parameter of the blinn kernel only");
+                if (!(b < 0.0)) in_->fail(where, "the blobbiness must be negative (Blinn's B < 0)");
+                c.blobbiness = b;
+            }
+        },
+        transform_keys);
+    c.shape = shape.transform;
+    return c;
+}
+
+}  // namespace zeroset

@@ -1,0 +1,266 @@
+// The blob's field along a ray, segment by segment: its polynomial with a
+// rounding bound (soft objects, POV-Ray) and its interval isolation
+// (Blinn's Gaussian, metaballs).
+#include "zeroset/trace/blob_segment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "zeroset/math/interval.hpp"
+#include "zeroset/roots/fast_polynomial.hpp"
+#include "zeroset/roots/polynomial_enclosure.hpp"
+#include "zeroset/roots/refine.hpp"
+#include "zeroset/trace/segment_stack.hpp"
+
+namespace zeroset {
+
+namespace {
+
+constexpr double unit_roundoff = std::numeric_limits<double>::epsilon() / 2.0;
+
+/// γ_k = k·u / (1 − k·u) (Higham §3.1).
+double gamma(int k) { return k * unit_roundoff / (1.0 - k * unit_roundoff); }
+
+/// Σ_j |M_kj|·|v_j| (+ |m_k| for a point), the largest over the rows k.
+double mapped_magnitude(const Mat4& m, const Vec3d& v, bool point) {
+    double largest = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const auto& r = m.m[k];
+        const double row = std::abs(r[0] * v.x) + std::abs(r[1] * v.y) + std::abs(r[2] * v.z) + (point ? std::abs(r[3]) : 0.0);
+        largest = std::max(largest, row);
+    }
+    return largest;
+}
+
+/// a·b for a quadratic b (ascending powers) and a polynomial a of `na` coefficients.
+int multiply_by_quadratic(std::span<double> a, int na, const std::array<double, 3>& b) {
+    std::array<double, BlobSegmentSolver::max_degree + 1> product{};
+    for (int i = 0; i < na; ++i)
+        for (int j = 0; j < 3; ++j) product[static_cast<std::size_t>(i + j)] += a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)];
+    std::copy_n(product.begin(), na + 2, a.begin());
+    return na + 2;
+}
+
+/// K(u(τ)) for a kernel polynomial c in u and u(τ) a quadratic, by Horner's
+/// rule over polynomials; returns the count of coefficients written to out.
+int compose(std::span<const double> c, const std::array<double, 3>& u, bool magnitudes, std::span<double> out) {
+    std::fill(out.begin(), out.end(), 0.0);
+    out[0] = magnitudes ? std::abs(c.back()) : c.back();
+    int n = 1;
+    for (std::size_t i = c.size() - 1; i-- > 0;) {
+        n = multiply_by_quadratic(out, n, u);
+        out[0] += magnitudes ? std::abs(c[i]) : c[i];
+    }
+    return n;
+}
+
+/// The interval of one coordinate of q over τ ∈ T: [q_c ± e] + T·[q_d ± e_d].
+Interval coordinate_over(double qc, double qc_error, double qd, double qd_error, const Interval& tau) {
+    const Interval center(rounding::down(qc - qc_error), rounding::up(qc + qc_error));
+    const Interval slope(rounding::down(qd - qd_error), rounding::up(qd + qd_error));
+    return center + tau * slope;
+}
+
+struct Enclosure {
+    Interval value;  // f over the segment
+    Interval slope;  // f′ over it
+};
+
+/// f and f′ over τ ∈ T about t_c, component by component.
+Enclosure enclose(const BlobSegmentSettings& s, std::span<const KernelOnRay> kernels,
+                  std::span<const std::uint32_t> active, double t_c, const Interval& tau) {
+    Interval field(0.0), field_slope(0.0);
+    for (const std::uint32_t i : active) {
+        const KernelOnRay& k = kernels[i];
+        const double qc_error = k.q0_error + std::abs(t_c) * (k.qd_error + unit_roundoff * length(k.qd)) +
+                                2.0 * unit_roundoff * length(k.q0 + t_c * k.qd);
+        Interval u(0.0), du(0.0);
+        for (int axis = 0; axis < 3; ++axis) {
+            const double qc = k.q0[axis] + t_c * k.qd[axis];
+            const Interval q = coordinate_over(qc, qc_error, k.qd[axis], k.qd_error, tau);
+            const Interval qd(rounding::down(k.qd[axis] - k.qd_error), rounding::up(k.qd[axis] + k.qd_error));
+            u += square(q);
+            du += 2.0 * q * qd;
+        }
+        u.lo = std::max(u.lo, 0.0);
+        field += k.strength * kernel_over(s.kernel, u, k.blobbiness);
+        field_slope += k.strength * (kernel_slope_over(s.kernel, u, k.blobbiness) * du);
+    }
+    return {s.threshold - field, -field_slope};
+}
+
+}  // namespace
+
+std::optional<KernelOnRay> kernel_on_ray(const Ray& ray, const Mat4& to_kernel, double reach, double strength,
+                                         double blobbiness, std::uint32_t component) {
+    KernelOnRay k;
+    k.q0 = to_kernel.transform_point(ray.origin);
+    k.qd = to_kernel.transform_vector(ray.dir);
+    k.q0_error = 4.0 * unit_roundoff * mapped_magnitude(to_kernel, ray.origin, true);
+    k.qd_error = 4.0 * unit_roundoff * mapped_magnitude(to_kernel, ray.dir, false);
+    k.strength = strength;
+    k.blobbiness = blobbiness;
+    k.component = component;
+    const double a2 = dot(k.qd, k.qd);
+    if (!(a2 > 0.0)) return std::nullopt;
+    const double nearest = -dot(k.q0, k.qd) / a2;
+    const Vec3d closest = k.q0 + nearest * k.qd;
+    const double u_min = dot(closest, closest);
+    if (!(u_min <= reach)) return std::nullopt;
+    // A hair wider than the exact reach, so rounding never drops a
+    // component where it still counts (its kernel is 0 past the reach).
+    const double half = std::sqrt((reach - u_min) / a2) * (1.0 + 1e-12) + 1e-12 * std::abs(nearest);
+    k.t_in = nearest - half;
+    k.t_out = nearest + half;
+    return k;
+}
+
+ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
+                                 std::span<const std::uint32_t> active, double t) {
+    double field = 0.0, slope = 0.0;
+    for (const std::uint32_t i : active) {
+        const KernelOnRay& k = kernels[i];
+        const Vec3d q = k.q0 + t * k.qd;
+        const KernelValue K = kernel_at(settings.kernel, dot(q, q), k.blobbiness);
+        field += k.strength * K.value;
+        slope += k.strength * K.slope * 2.0 * dot(q, k.qd);
+    }
+    return {settings.threshold - field, -slope};
+}
+
+double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
+                              std::span<const std::uint32_t> active, double ta, double tb) {
+    double bound = 0.0;
+    for (const std::uint32_t i : active) {
+        const KernelOnRay& k = kernels[i];
+        if (k.strength < 0.0) continue;
+        const double nearest = std::clamp(-dot(k.q0, k.qd) / dot(k.qd, k.qd), ta, tb);
+        const Vec3d q = k.q0 + nearest * k.qd;
+        // u a little low and K a little high: every kernel decreases in u.
+        const double u = std::max(0.0, dot(q, q) * (1.0 - 1e-9) - 1e-300);
+        bound += k.strength * kernel_at(settings.kernel, u, k.blobbiness).value;
+    }
+    return bound * (1.0 + 1e-9);
+}
+
+int BlobSegmentSolver::polynomial(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active,
+                                  double t_c, Coefficients& value, Coefficients& radius) const {
+    const std::span<const double> c = blob_kernel_info(settings_.kernel).polynomial;
+    const int n = 2 * static_cast<int>(c.size() - 1) + 1;
+    value.fill(0.0);
+    Coefficients magnitude{}, perturbation{};
+    Coefficients term{}, bound{}, plain{};
+    for (const std::uint32_t i : active) {
+        const KernelOnRay& k = kernels[i];
+        const Vec3d q = k.q0 + t_c * k.qd;
+        // The error of q's coordinates: the ray's map, then q0 + t_c·qd.
+        const double q_error = k.q0_error + std::abs(t_c) * k.qd_error + 2.0 * unit_roundoff * (length(k.q0) + std::abs(t_c) * length(k.qd));
+        const Vec3d q_mag{std::abs(q.x), std::abs(q.y), std::abs(q.z)};
+        const Vec3d d_mag{std::abs(k.qd.x), std::abs(k.qd.y), std::abs(k.qd.z)};
+        const Vec3d q_up = q_mag + Vec3d{q_error, q_error, q_error};
+        const Vec3d d_up = d_mag + Vec3d{k.qd_error, k.qd_error, k.qd_error};
+        compose(c, {dot(q, q), 2.0 * dot(q, k.qd), dot(k.qd, k.qd)}, false, term);
+        compose(c, {dot(q_up, q_up), 2.0 * dot(q_up, d_up), dot(d_up, d_up)}, true, bound);
+        compose(c, {dot(q_mag, q_mag), 2.0 * dot(q_mag, d_mag), dot(d_mag, d_mag)}, true, plain);
+        const double s = std::abs(k.strength);
+        for (int j = 0; j < n; ++j) {
+            value[static_cast<std::size_t>(j)] -= k.strength * term[static_cast<std::size_t>(j)];
+            magnitude[static_cast<std::size_t>(j)] += s * bound[static_cast<std::size_t>(j)];
+            // The majorant's growth bounds what the inputs' errors do.
+            perturbation[static_cast<std::size_t>(j)] += s * (bound[static_cast<std::size_t>(j)] - plain[static_cast<std::size_t>(j)]);
+        }
+    }
+    value[0] += settings_.threshold;
+    magnitude[0] += settings_.threshold;
+    const double g = gamma(2 * (24 + static_cast<int>(active.size())));
+    for (int j = 0; j < n; ++j)
+        radius[static_cast<std::size_t>(j)] =
+            (g * magnitude[static_cast<std::size_t>(j)] + perturbation[static_cast<std::size_t>(j)]) * (1.0 + 8.0 * unit_roundoff);
+    return n;
+}
+
+HitStatus BlobSegmentSolver::roots(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active,
+                                   double ta, double tb, bool first_only, std::vector<double>& roots,
+                                   TraceCounters& counters) const {
+    if (blob_kernel_info(settings_.kernel).polynomial.empty())
+        return interval_roots(kernels, active, ta, tb, first_only, roots, counters);
+    return polynomial_roots(kernels, active, ta, tb, first_only, roots, counters);
+}
+
+HitStatus BlobSegmentSolver::polynomial_roots(std::span<const KernelOnRay> kernels,
+                                              std::span<const std::uint32_t> active, double ta, double tb,
+                                              bool first_only, std::vector<double>& roots,
+                                              TraceCounters& counters) const {
+    const double t_c = 0.5 * ta + 0.5 * tb;
+    const double s0 = std::min(ta - t_c, 0.0), s1 = std::max(tb - t_c, 0.0);
+    Coefficients value{}, radius{};
+    const int n = polynomial(kernels, active, t_c, value, radius);
+    ++counters.point_evaluations;
+    for (int j = 0; j < n; ++j)
+        if (!std::isfinite(value[static_cast<std::size_t>(j)])) return HitStatus::Failed;
+    const std::span<const double> f(value.data(), static_cast<std::size_t>(n));
+    const PolynomialEnclosure enclosure{f, std::span<const double>(radius.data(), static_cast<std::size_t>(n))};
+    std::array<double, max_degree> extrema{};
+    const PolynomialRoots e = fast_polynomial_extrema(f, s0, s1, extrema);
+    counters.point_evaluations += static_cast<std::uint64_t>(e.evaluations);
+    const std::span<const double> turns(extrema.data(), static_cast<std::size_t>(e.count));
+    const auto at = [&](double s) { return std::clamp(t_c + s, ta, tb); };
+    if (first_only) {
+        const PossibleRoot r = first_possible_root(enclosure, s0, s1, turns, false);
+        counters.point_evaluations += static_cast<std::uint64_t>(r.evaluations);
+        if (!r.found) return HitStatus::NoHit;
+        roots.push_back(at(r.t));
+        return HitStatus::Ok;
+    }
+    std::array<double, 2 * max_degree + 2> found{};
+    int evaluations = 0;
+    const int count = possible_roots(enclosure, s0, s1, turns, found, evaluations);
+    counters.point_evaluations += static_cast<std::uint64_t>(evaluations);
+    for (int i = 0; i < count; ++i) roots.push_back(at(found[static_cast<std::size_t>(i)]));
+    return count > 0 ? HitStatus::Ok : HitStatus::NoHit;
+}
+
+HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels,
+                                            std::span<const std::uint32_t> active, double ta, double tb,
+                                            bool first_only, std::vector<double>& roots,
+                                            TraceCounters& counters) const {
+    const double t_c = 0.5 * ta + 0.5 * tb;
+    const auto point = [&](double t) {
+        ++counters.point_evaluations;
+        return blob_field_at(settings_, kernels, active, t);
+    };
+    const std::size_t found_before = roots.size();
+    SegmentStack segments;
+    segments.push(ta, tb, 0);
+    for (long visited = 0; !segments.empty(); ++visited) {
+        if (visited == settings_.max_segments || counters.over_limit()) return HitStatus::Failed;
+        const Segment s = segments.pop();
+        const Enclosure e = enclose(settings_, kernels, active, t_c, Interval(s.a - t_c, s.b - t_c));
+        ++counters.interval_evaluations;
+        if (e.value.is_empty() || !std::isfinite(e.value.lo) || !std::isfinite(e.value.hi)) return HitStatus::Failed;
+        if (!e.value.contains(0.0)) continue;  // Fig. 9, step 2: no root here
+        if (!e.slope.is_empty() && !e.slope.contains(0.0)) {  // step 4: monotone, so one root at most
+            const ValueAndDerivative fa = point(s.a), fb = point(s.b);
+            if (is_inside(fa.value) == is_inside(fb.value)) continue;
+            const BracketResult r = refine_root(point, s.a, s.b);
+            roots.push_back(r.t);
+            if (first_only) return HitStatus::Ok;
+            continue;
+        }
+        // A near miss: the mean-value form f(m) + f′(T)·(T − m) excludes 0.
+        const double mid = 0.5 * (s.a + s.b);
+        const Interval at_mid = enclose(settings_, kernels, active, t_c, Interval(mid - t_c)).value;
+        if (!(at_mid + e.slope * Interval(rounding::down(s.a - mid), rounding::up(s.b - mid))).contains(0.0)) continue;
+        if (s.b - s.a > settings_.tangent_width && SegmentStack::above_resolution(s) && segments.can_split(s)) {
+            segments.split(s, s.a);  // step 5: front half first
+            continue;
+        }
+        // Still ambiguous at the finest width: a tangent root.
+        roots.push_back(mid);
+        if (first_only) return HitStatus::Ok;
+    }
+    return roots.size() > found_before ? HitStatus::Ok : HitStatus::NoHit;
+}
+
+}  // namespace zeroset

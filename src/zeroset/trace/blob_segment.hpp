@@ -1,0 +1,101 @@
+// A blob along one ray (survey §2, §3): each component the ray comes within
+// reach of is a function of t — its kernel-space point q(t) = q₀ + t·q_d,
+// u(t) = |q(t)|² a quadratic in t — and between the entry and exit events of
+// those components the set in reach is fixed. On such a segment
+// f(t) = T − Σ sᵢ·K(uᵢ(t)) is solved, first root first:
+//
+//   Exact polynomials (soft objects, POV-Ray): K is a polynomial in u, so f
+//   is a polynomial in t of degree 6 or 4, formed about the segment's middle
+//   with a proven bound on its rounding (Higham's γ over the majorant, plus
+//   the error of mapping the ray into each kernel's space), then solved by
+//   the guarded fast solver (roots/polynomial_enclosure.hpp): no root or
+//   graze is missed that the bound can see.
+//
+//   Interval isolation (Blinn's Gaussian, metaballs): Mitchell's method
+//   (Fig. 9) on the segment, with f and f′ enclosed kernel by kernel — u over
+//   a t-interval is an exact quadratic range, and every kernel is monotone in
+//   u, so the enclosures are tight — a mean-value test for near misses, and
+//   safeguarded Newton on monotone pieces.
+//
+// Everything here works in fixed arrays and a caller's buffers: nothing is
+// allocated per ray.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "zeroset/expr/blob_model.hpp"
+#include "zeroset/math/ray.hpp"
+#include "zeroset/roots/root_function.hpp"
+#include "zeroset/trace/root_finder.hpp"
+
+namespace zeroset {
+
+/// One component as a ray sees it.
+struct KernelOnRay {
+    Vec3d q0;           // q(t) = q0 + t·qd, in the component's kernel space
+    Vec3d qd;
+    double q0_error;    // a bound on the error of q0's coordinates (mapping the ray's origin)
+    double qd_error;    // the same for qd
+    double strength;
+    double blobbiness;
+    double t_in;        // the ray is within reach, u(t) ≤ reach, on [t_in, t_out]
+    double t_out;
+    std::uint32_t component;
+};
+
+/// The component as the ray sees it, or nothing when the ray stays out of
+/// its reach (u > reach everywhere); t_in and t_out are not clipped.
+std::optional<KernelOnRay> kernel_on_ray(const Ray& ray, const Mat4& to_kernel, double reach, double strength,
+                                         double blobbiness, std::uint32_t component);
+
+/// What a segment search is given.
+struct BlobSegmentSettings {
+    BlobKernel kernel;
+    double threshold;
+    /// Segments narrower than this that may still hold a root are a (tangent) hit.
+    double tangent_width;
+    /// Interval segments one search may visit before it fails.
+    long max_segments;
+};
+
+/// f and f′ at t over the given components (those out of reach add 0).
+ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
+                                 std::span<const std::uint32_t> active, double t);
+
+/// An upper bound on Σ sᵢ·K(uᵢ) over [ta, tb] from the positive components'
+/// nearest approach: when it stays below T, the segment holds no root.
+double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
+                              std::span<const std::uint32_t> active, double ta, double tb);
+
+/// The roots of f on one segment, increasing, by the kernel's exact method.
+class BlobSegmentSolver {
+public:
+    explicit BlobSegmentSolver(const BlobSegmentSettings& settings) : settings_(settings) {}
+
+    /// Appends the roots in [ta, tb] to `roots` (only the first when
+    /// `first_only`); Failed when the interval search ran out of segments.
+    HitStatus roots(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active, double ta,
+                    double tb, bool first_only, std::vector<double>& roots, TraceCounters& counters) const;
+
+    /// Soft objects and POV-Ray: f about t_c as a polynomial in τ = t − t_c
+    /// with its rounding radius, ascending powers (degree ≤ 6); the count of
+    /// coefficients is returned.
+    static constexpr int max_degree = 6;
+    using Coefficients = std::array<double, max_degree + 1>;
+    int polynomial(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active, double t_c,
+                   Coefficients& value, Coefficients& radius) const;
+
+private:
+    HitStatus polynomial_roots(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active, double ta,
+                               double tb, bool first_only, std::vector<double>& roots, TraceCounters& counters) const;
+    HitStatus interval_roots(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active, double ta,
+                             double tb, bool first_only, std::vector<double>& roots, TraceCounters& counters) const;
+
+    BlobSegmentSettings settings_;
+};
+
+}  // namespace zeroset

@@ -1,0 +1,247 @@
+// The blob primitive (accel/blob.hpp) against the same field written as an
+// expression and traced by the general interval method: on ten thousand
+// rays per kernel — grazing rays among them — the first hits must agree,
+// and neither may miss what the other proves is there. Also the kernels'
+// formulas and enclosures, spans, normals, and the cost per ray.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <random>
+
+#include "zeroset/accel/blob.hpp"
+#include "zeroset/accel/implicit_leaf.hpp"
+#include "zeroset/accel/trace_scratch.hpp"
+#include "zeroset/expr/evaluator.hpp"
+
+namespace zeroset {
+namespace {
+
+TEST(BlobKernels, MatchTheSurveysFormulas) {
+    // POV-Ray: (1 − u)²; soft objects: eq. 23 with R = 2, u = r²/4.
+    EXPECT_DOUBLE_EQ(kernel_at(BlobKernel::PovRay, 0.25, 0).value, 0.5625);
+    for (const double r2 : {0.0, 0.5, 1.7, 3.2, 3.99}) {
+        const double c = -r2 * r2 * r2 / 144.0 + 17.0 * r2 * r2 / 144.0 - 11.0 * r2 / 18.0 + 1.0;
+        EXPECT_NEAR(kernel_at(BlobKernel::Soft, r2 / 4.0, 0).value, c, 1e-15) << r2;
+    }
+    EXPECT_EQ(kernel_at(BlobKernel::Soft, 1.0, 0).value, 0.0);
+    // Metaballs: 1 − 3ρ², then (3/2)(1 − ρ)², meeting at ρ = 1/3 with value and slope.
+    EXPECT_DOUBLE_EQ(kernel_at(BlobKernel::Metaball, 0.0, 0).value, 1.0);
+    const double below = 1.0 / 9.0 - 1e-9, above = 1.0 / 9.0 + 1e-9;
+    EXPECT_NEAR(kernel_at(BlobKernel::Metaball, below, 0).value, kernel_at(BlobKernel::Metaball, above, 0).value, 1e-8);
+    EXPECT_NEAR(kernel_at(BlobKernel::Metaball, below, 0).slope, kernel_at(BlobKernel::Metaball, above, 0).slope, 1e-6);
+    EXPECT_DOUBLE_EQ(kernel_at(BlobKernel::Metaball, 0.25, 0).value, 1.5 * 0.25);
+    // Blinn: e^(B(u − 1)), 1 at u = 1.
+    EXPECT_DOUBLE_EQ(kernel_at(BlobKernel::Blinn, 1.0, -3.0).value, 1.0);
+    EXPECT_NEAR(kernel_at(BlobKernel::Blinn, 0.0, -1.0).value, std::exp(1.0), 1e-15);
+}
+
+TEST(BlobKernels, SlopesAndEnclosuresAreRight) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.3);
+    for (const BlobKernelInfo& info : blob_kernels()) {
+        for (int i = 0; i < 2000; ++i) {
+            double a = unit(random), b = unit(random);
+            if (a > b) std::swap(a, b);
+            const Interval value = kernel_over(info.kernel, Interval(a, b), -2.0);
+            const Interval slope = kernel_slope_over(info.kernel, Interval(a, b), -2.0);
+            for (const double u : {a, b, 0.5 * (a + b), a + 0.3 * (b - a)}) {
+                const KernelValue k = kernel_at(info.kernel, u, -2.0);
+                EXPECT_TRUE(value.contains(k.value)) << info.name << " at " << u;
+                EXPECT_TRUE(slope.contains(k.slope)) << info.name << " at " << u;
+            }
+            const double u = 0.5 * (a + b), h = 1e-6;
+            if (std::abs(u - 1.0 / 9.0) > 2 * h && std::abs(u - 1.0) > 2 * h) {
+                const double difference =
+                    (kernel_at(info.kernel, u + h, -2.0).value - kernel_at(info.kernel, u - h, -2.0).value) / (2 * h);
+                EXPECT_NEAR(kernel_at(info.kernel, u, -2.0).slope, difference, 1e-6) << info.name << " at " << u;
+            }
+        }
+    }
+}
+
+/// Twelve components in [−1, 1]³: two of them negative, one an ellipsoid.
+std::shared_ptr<const BlobModel> random_blob(BlobKernel kernel, std::uint32_t seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0), radius(0.5, 0.9);
+    std::vector<BlobComponent> components;
+    for (int i = 0; i < 12; ++i) {
+        BlobComponent c;
+        c.center = {u(random), u(random), u(random)};
+        c.radius = radius(random);
+        c.strength = i < 2 ? -0.5 : 1.0;
+        c.blobbiness = -2.0;
+        if (i == 5) c.shape = Mat4::rotate_xyz_degrees({30, 40, 0}) * Mat4::scale({1.0, 0.4, 1.6});
+        components.push_back(c);
+    }
+    return std::make_shared<const BlobModel>(kernel, 0.5, std::move(components));
+}
+
+struct Comparison {
+    int rays = 0, hits = 0, misses = 0, false_hits = 0, grazes = 0;
+    double max_dt = 0.0;          // over the rays aimed at random
+    double max_grazing_dt = 0.0;  // over the grazing rays, where a root is ill-conditioned
+};
+
+class BlobAgainstExpression : public ::testing::TestWithParam<BlobKernel> {};
+
+TEST_P(BlobAgainstExpression, FirstHitsAgreeOnTenThousandRays) {
+    const BlobKernel kernel = GetParam();
+    const auto model = random_blob(kernel, 11);
+    const Blob blob(BlobDescription{"blob", model, no_material, 1e-9, 1});
+    LeafDescription d;
+    d.name = "expression";
+    d.surface = model->field_expression();
+    d.bounds = Bounds::make_box(blob.bounds());
+    d.method = Method::Interval;
+    d.partition = Partition::None;
+    const ImplicitLeaf reference(0, d);
+    Evaluator<double> f(reference.tape());
+    const auto f_at = [&](const Vec3d& p) { return f(p.x, p.y, p.z); };
+    TraceScratch scratch(1);
+
+    // Does the ray dip below −depth somewhere near t (sampled)? Then a hit there is real.
+    const auto enters = [&](const Ray& ray, double t, double depth) {
+        for (int k = 0; k <= 400; ++k)
+            if (f_at(ray.at(t + (k - 50) * 1e-4)) < -depth) return true;
+        return false;
+    };
+
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Comparison c;
+    std::vector<Ray> rays;
+    std::vector<bool> grazing;
+    while (rays.size() < 10000) {
+        const Vec3d target{1.3 * u(random), 1.3 * u(random), 1.3 * u(random)};
+        const Vec3d dir = normalize(Vec3d{u(random), u(random), u(random)});
+        const Ray ray{target - 6.0 * dir, dir};
+        rays.push_back(ray);
+        grazing.push_back(false);
+        // Every fourth: a ray grazing the surface where this one hits it.
+        if (rays.size() % 4 != 0) continue;
+        const auto hit = reference.first_hit(ray, 0.0, 1e9, scratch);
+        if (!hit) continue;
+        const Vec3d p = ray.at(hit->t), n = normalize(blob.gradient_at(p));
+        Vec3d tangent = cross(n, Vec3d{u(random), u(random), u(random)});
+        if (!(length(tangent) > 1e-3)) continue;
+        tangent = normalize(tangent);
+        const double offset = std::array{0.0, 1e-3, -1e-3, 1e-7, -1e-7}[rays.size() / 4 % 5];
+        rays.push_back({p + offset * n - 6.0 * tangent, tangent});
+        grazing.push_back(true);
+    }
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const Ray& ray = rays[i];
+        ++c.rays;
+        const auto mine = blob.first_hit(ray, 0.0, 1e9, scratch);
+        const auto theirs = reference.first_hit(ray, 0.0, 1e9, scratch);
+        if (mine && theirs) {
+            ++c.hits;
+            const double dt = std::abs(mine->t - theirs->t);
+            if (dt > 1e-6) {
+                // Different roots: the earlier one must be a graze the other passed.
+                const Hit& early = mine->t < theirs->t ? *mine : *theirs;
+                EXPECT_LT(std::abs(f_at(ray.at(early.t))), 1e-6) << "t " << mine->t << " vs " << theirs->t;
+                ++c.grazes;
+            } else {
+                double& largest = grazing[i] ? c.max_grazing_dt : c.max_dt;
+                largest = std::max(largest, dt);
+                // Both are roots: f at each is 0 to within its rounding —
+                // and for Gaussians the components cut off, each below
+                // tolerance·T, 12 of them at most.
+                EXPECT_LT(std::abs(f_at(ray.at(mine->t))), kernel == BlobKernel::Blinn ? 12 * 1e-9 * 0.5 : 1e-10);
+            }
+        } else if (theirs) {
+            if (enters(ray, theirs->t, 1e-7)) ++c.misses;
+            else ++c.grazes;
+        } else if (mine) {
+            if (std::abs(f_at(ray.at(mine->t))) > 1e-6) ++c.false_hits;
+            else ++c.grazes;
+        }
+    }
+    std::cout << blob_kernel_info(kernel).name << ": " << c.rays << " rays, " << c.hits << " hit by both, max |dt| "
+              << c.max_dt << " (grazing rays " << c.max_grazing_dt << "), " << c.grazes << " grazes told apart, " << c.misses << " misses, " << c.false_hits
+              << " false hits\n";
+    EXPECT_EQ(c.misses, 0);
+    EXPECT_EQ(c.false_hits, 0);
+    EXPECT_LT(c.max_dt, 1e-8);
+    EXPECT_GT(c.hits, 3000);
+}
+
+TEST_P(BlobAgainstExpression, SpansAndNormalsAgree) {
+    const BlobKernel kernel = GetParam();
+    const auto model = random_blob(kernel, 23);
+    const Blob blob(BlobDescription{"blob", model, no_material, 1e-9, 1});
+    LeafDescription d;
+    d.surface = model->field_expression();
+    d.bounds = Bounds::make_box(blob.bounds());
+    d.method = Method::Interval;
+    d.partition = Partition::None;
+    const ImplicitLeaf reference(0, d);
+    Evaluator<Dual<double>> gradient(reference.tape());
+    TraceScratch scratch(1);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int compared = 0;
+    for (int i = 0; i < 500; ++i) {
+        const Vec3d dir = normalize(Vec3d{u(random), u(random), u(random)});
+        const Ray ray{Vec3d{u(random), u(random), u(random)} - 6.0 * dir, dir};
+        SpanList mine, theirs;
+        blob.spans(ray, 0.0, 20.0, scratch, mine);
+        reference.spans(ray, 0.0, 20.0, scratch, theirs);
+        ASSERT_EQ(mine.size(), theirs.size()) << "ray " << i;
+        for (std::size_t k = 0; k < mine.size(); ++k) {
+            EXPECT_NEAR(mine[k].enter.t, theirs[k].enter.t, 1e-8);
+            EXPECT_NEAR(mine[k].exit.t, theirs[k].exit.t, 1e-8);
+            const Vec3d n = blob.local_normal(mine[k].enter.surface, scratch);
+            const Vec3d expected = normalize(evaluate_gradient(gradient, mine[k].enter.surface.local_point).g);
+            EXPECT_NEAR(length(n - expected), 0.0, 1e-8);
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 200);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryKernel, BlobAgainstExpression,
+                         ::testing::Values(BlobKernel::Blinn, BlobKernel::Metaball, BlobKernel::Soft, BlobKernel::PovRay),
+                         [](const auto& p) { return std::string(blob_kernel_info(p.param).name); });
+
+TEST(Blob, ARayMeetsOnlyTheComponentsAlongIt) {
+    // 20 000 small components spread over a 40-unit cube: a ray through it
+    // comes within reach of a few of them, not of thousands.
+    std::mt19937 random(1);
+    std::uniform_real_distribution<double> u(-20.0, 20.0);
+    std::vector<BlobComponent> components(20000);
+    for (BlobComponent& c : components) {
+        c.center = {u(random), u(random), u(random)};
+        c.radius = 0.3;
+    }
+    const Blob blob(BlobDescription{"cloud", std::make_shared<const BlobModel>(BlobKernel::PovRay, 0.5, components),
+                                    no_material, 1e-7, 1});
+    TraceScratch scratch(0);
+    std::uniform_real_distribution<double> v(-1.0, 1.0);
+    for (int i = 0; i < 200; ++i) {
+        const Vec3d dir = normalize(Vec3d{v(random), v(random), v(random)});
+        blob.first_hit({-60.0 * dir, dir}, 0.0, 1e9, scratch);
+    }
+    EXPECT_LT(static_cast<double>(scratch.counters.blob_kernels) / 200.0, 50.0);
+}
+
+TEST(Blob, RefusesWhatCannotBeTraced) {
+    BlobComponent c;
+    EXPECT_THROW(BlobModel(BlobKernel::PovRay, 0.0, {c}), std::invalid_argument);
+    EXPECT_THROW(BlobModel(BlobKernel::PovRay, 1.0, {}), std::invalid_argument);
+    c.radius = -1.0;
+    EXPECT_THROW(BlobModel(BlobKernel::PovRay, 1.0, {c}), std::invalid_argument);
+    c.radius = 1.0;
+    c.shape = Mat4::scale({1.0, 0.0, 1.0});
+    EXPECT_THROW(BlobModel(BlobKernel::PovRay, 1.0, {c}), std::invalid_argument);
+    c.shape = Mat4::identity();
+    c.strength = -1.0;  // only negative: no solid
+    const auto negative = std::make_shared<const BlobModel>(BlobKernel::PovRay, 1.0, std::vector{c});
+    EXPECT_THROW(Blob(BlobDescription{"b", negative, no_material, 1e-7, 1}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace zeroset
