@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "zeroset/accel/spans_from_roots.hpp"
@@ -24,12 +25,18 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
         const BlobComponent& c = m.components()[i];
         const double reach = m.reach(i, description_.tolerance);
         if (!(reach > 0.0)) continue;  // a Gaussian too weak to count anywhere
-        components_.push_back({m.to_kernel(i), reach, c.strength, c.blobbiness});
+        const bool sphere = c.shape == Mat4::identity();
+        components_.push_back({m.to_kernel(i), reach, c.strength, c.blobbiness, sphere, c.center, 1.0 / c.radius});
         boxes.push_back(m.reach_box(i, reach));
         stats_.reach_radius = std::max(stats_.reach_radius, std::sqrt(reach));
     }
     bvh_ = std::make_unique<Bvh>(boxes, description_.threads);
     scale_ = std::max(bounds_.diagonal(), 1e-300);
+    // The first window of a ray: the median reach box's diagonal.
+    std::vector<double> sizes;
+    for (const Box3& b : boxes) sizes.push_back(b.diagonal());
+    std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
+    window_ = sizes[sizes.size() / 2];
     const RootFinderSettings tolerances = settings_for_scale(scale_);
     settings_ = {m.kernel(), m.threshold(), tolerances.tangent_width, tolerances.max_segments};
     stats_.components = components_.size();
@@ -44,12 +51,36 @@ BlobScratch& Blob::scratch_for(TraceScratch& scratch) const {
     return *slot;
 }
 
+std::optional<KernelOnRay> Blob::on_ray(const Ray& ray, std::uint32_t i) const {
+    const Component& c = components_[i];
+    Vec3d q0, qd;
+    if (c.sphere) {
+        q0 = (ray.origin - c.center) * c.inverse_radius;
+        qd = ray.dir * c.inverse_radius;
+    } else {
+        q0 = c.to_kernel.transform_point(ray.origin);
+        qd = c.to_kernel.transform_vector(ray.dir);
+    }
+    const std::optional<Span> reach = reach_on_ray(q0, qd, c.reach);
+    if (!reach) return std::nullopt;
+    KernelOnRay k{q0, qd, 0.0, 0.0, c.strength, c.blobbiness, reach->t0, reach->t1, i};
+    if (c.sphere) {
+        const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
+        constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
+        k.q0_error = u4 * (largest(ray.origin) + largest(c.center)) * c.inverse_radius;
+        k.qd_error = u4 * largest(ray.dir) * c.inverse_radius;
+    } else {
+        k.q0_error = mapping_error(c.to_kernel, ray.origin, true);
+        k.qd_error = mapping_error(c.to_kernel, ray.dir, false);
+    }
+    return k;
+}
+
 void Blob::gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, TraceScratch& scratch) const {
     s.kernels.clear();
     s.events.clear();
     bvh_->traverse(ray, t_min, t_max, [&](std::uint32_t i, double limit) {
-        const Component& c = components_[i];
-        const auto k = kernel_on_ray(ray, c.to_kernel, c.reach, c.strength, c.blobbiness, i);
+        const auto k = on_ray(ray, i);
         if (k && k->t_out >= t_min && k->t_in <= t_max) {
             const auto index = static_cast<std::uint32_t>(s.kernels.size());
             s.kernels.push_back(*k);
@@ -112,29 +143,49 @@ SurfaceRef Blob::surface_at(const Ray& ray, double t, BoundaryKind kind) const {
 }
 
 std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    const auto span = bounds_.clip(ray, t_min, t_max);
+    if (!span) return std::nullopt;
     BlobScratch& s = scratch_for(scratch);
-    gather(ray, t_min, t_max, s, scratch);
-    if (s.kernels.empty()) return std::nullopt;
-    const double start = value_on_ray(s, t_min);
-    if (start <= 0.0) return Hit{t_min, surface_at(ray, t_min, start == 0.0 ? BoundaryKind::Surface : BoundaryKind::Open)};
     const BlobSegmentSolver solver(settings_);
-    std::optional<double> hit;
-    bool failed = false;
-    sweep(s, [&](double ta, double tb) {
-        s.roots.clear();
-        if (solver.roots(s.kernels, s.active, ta, tb, true, s.roots, scratch.counters) == HitStatus::Failed) {
-            failed = true;
-            return false;
+    // Window by window, each twice as long as the one before: a ray that
+    // hits early never gathers the components far behind the hit, and one
+    // that misses gathers each at most twice over.
+    double window = window_ / length(ray.dir);
+    for (double w0 = span->t0;; window *= 2.0) {
+        const double w1 = std::min(w0 + window, span->t1);
+        gather(ray, w0, w1, s, scratch);
+        if (w0 == t_min && !s.kernels.empty()) {  // the ray may start inside
+            const double start = value_on_ray(s, t_min);
+            if (start <= 0.0)
+                return Hit{t_min, surface_at(ray, t_min, start == 0.0 ? BoundaryKind::Surface : BoundaryKind::Open)};
         }
-        if (!s.roots.empty()) hit = s.roots.front();
-        return !hit;
-    });
-    if (failed) {
-        ++scratch.counters.failed_queries;
-        return std::nullopt;
+        std::optional<double> hit;
+        bool failed = false;
+        sweep(s, [&](double ta, double tb) {
+            s.roots.clear();
+            if (solver.roots(s.kernels, s.active, ta, tb, true, s.roots, scratch.counters) == HitStatus::Failed) {
+                failed = true;
+                return false;
+            }
+            if (!s.roots.empty()) hit = s.roots.front();
+            return !hit;
+        });
+        if (failed) {
+            ++scratch.counters.failed_queries;
+            return std::nullopt;
+        }
+        if (hit) {
+            const Hit h{*hit, surface_at(ray, *hit, BoundaryKind::Surface)};
+            s.hit_blob = this;
+            s.hit_point = h.surface.local_point;
+            s.hit_components.clear();
+            for (const std::uint32_t k : s.active) s.hit_components.push_back(s.kernels[k].component);
+            return h;
+        }
+        if (w1 >= span->t1) break;
+        w0 = w1;
     }
-    if (!hit) return std::nullopt;
-    return Hit{*hit, surface_at(ray, *hit, BoundaryKind::Surface)};
+    return std::nullopt;
 }
 
 void Blob::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {
@@ -184,19 +235,26 @@ double Blob::value_at(const Vec3d& p) const {
 
 Vec3d Blob::gradient_at(const Vec3d& p) const {
     Vec3d gradient{};
-    components_at(p, [&](const Component& c) {
-        const Vec3d q = c.to_kernel.transform_point(p);
-        const double u = dot(q, q);
-        if (u > c.reach) return;
-        // ∇u = 2·Mᵀq; f = T − Σ s·K(u)
-        gradient = gradient - (c.strength * kernel_at(settings_.kernel, u, c.blobbiness).slope * 2.0) *
-                                  c.to_kernel.transpose_transform_vector(q);
-    });
+    components_at(p, [&](const Component& c) { gradient = gradient + gradient_from(p, c); });
     return gradient;
 }
 
-Vec3d Blob::local_normal(const SurfaceRef& surface, TraceScratch&) const {
-    const Vec3d g = gradient_at(surface.local_point);
+Vec3d Blob::gradient_from(const Vec3d& p, const Component& c) const {
+    const Vec3d q = c.to_kernel.transform_point(p);
+    const double u = dot(q, q);
+    if (u > c.reach) return {};
+    // ∇u = 2·Mᵀq; f = T − Σ s·K(u)
+    return -(c.strength * kernel_at(settings_.kernel, u, c.blobbiness).slope * 2.0) * c.to_kernel.transpose_transform_vector(q);
+}
+
+Vec3d Blob::local_normal(const SurfaceRef& surface, TraceScratch& scratch) const {
+    Vec3d g{};
+    const BlobScratch& s = scratch_for(scratch);
+    if (s.hit_blob == this && s.hit_point == surface.local_point) {
+        for (const std::uint32_t i : s.hit_components) g = g + gradient_from(surface.local_point, components_[i]);
+    } else {
+        g = gradient_at(surface.local_point);
+    }
     const double n = length(g);
     return n > 0.0 && std::isfinite(n) ? g / n : Vec3d{};
 }

@@ -46,6 +46,11 @@ struct BlobScratch {
     std::vector<std::uint32_t> active;    // kernels in reach on the current segment
     std::vector<std::uint32_t> position;  // each kernel's place in active
     std::vector<double> roots;
+    /// The last hit found and the components in reach there, which give its
+    /// normal when it is shaded next (as it usually is) without a search.
+    const void* hit_blob = nullptr;
+    Vec3d hit_point{};
+    std::vector<std::uint32_t> hit_components;
 };
 
 /// What the render summary says about a blob.
@@ -82,7 +87,12 @@ private:
         double reach;  // u up to which it counts
         double strength;
         double blobbiness;
+        bool sphere;            // to_kernel is (p − center)/R: mapped without the matrix
+        Vec3d center;
+        double inverse_radius;
     };
+    /// The component as the ray sees it, if the ray comes within its reach.
+    [[nodiscard]] std::optional<KernelOnRay> on_ray(const Ray& ray, std::uint32_t i) const;
 
     BlobScratch& scratch_for(TraceScratch& scratch) const;
     /// The components the ray meets within [t_min, t_max], into s.kernels, and their events, sorted.
@@ -95,6 +105,8 @@ private:
     /// f at t over every gathered kernel in reach there.
     [[nodiscard]] double value_on_ray(const BlobScratch& s, double t) const;
     [[nodiscard]] SurfaceRef surface_at(const Ray& ray, double t, BoundaryKind kind) const;
+    /// One component's part of ∇f at p (0 beyond its reach).
+    [[nodiscard]] Vec3d gradient_from(const Vec3d& p, const Component& c) const;
     /// Calls visit(i) for the components whose reach holds p.
     template <class Visit>
     void components_at(const Vec3d& p, Visit&& visit) const;
@@ -103,7 +115,8 @@ private:
     BlobSegmentSettings settings_;
     std::vector<Component> components_;
     Box3 bounds_;
-    double scale_ = 1.0;  // the bounds' diagonal
+    double scale_ = 1.0;   // the bounds' diagonal
+    double window_ = 1.0;  // the length first_hit gathers components over first
     std::unique_ptr<Bvh> bvh_;
     BlobStats stats_;
 };

@@ -92,28 +92,19 @@ Enclosure enclose(const BlobSegmentSettings& s, std::span<const KernelOnRay> ker
 
 }  // namespace
 
-std::optional<KernelOnRay> kernel_on_ray(const Ray& ray, const Mat4& to_kernel, double reach, double strength,
-                                         double blobbiness, std::uint32_t component) {
-    KernelOnRay k;
-    k.q0 = to_kernel.transform_point(ray.origin);
-    k.qd = to_kernel.transform_vector(ray.dir);
-    k.q0_error = 4.0 * unit_roundoff * mapped_magnitude(to_kernel, ray.origin, true);
-    k.qd_error = 4.0 * unit_roundoff * mapped_magnitude(to_kernel, ray.dir, false);
-    k.strength = strength;
-    k.blobbiness = blobbiness;
-    k.component = component;
-    const double a2 = dot(k.qd, k.qd);
+std::optional<Span> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach) {
+    const double a2 = dot(qd, qd);
     if (!(a2 > 0.0)) return std::nullopt;
-    const double nearest = -dot(k.q0, k.qd) / a2;
-    const Vec3d closest = k.q0 + nearest * k.qd;
+    const double nearest = -dot(q0, qd) / a2;
+    const Vec3d closest = q0 + nearest * qd;
     const double u_min = dot(closest, closest);
     if (!(u_min <= reach)) return std::nullopt;
-    // A hair wider than the exact reach, so rounding never drops a
-    // component where it still counts (its kernel is 0 past the reach).
     const double half = std::sqrt((reach - u_min) / a2) * (1.0 + 1e-12) + 1e-12 * std::abs(nearest);
-    k.t_in = nearest - half;
-    k.t_out = nearest + half;
-    return k;
+    return Span{nearest - half, nearest + half};
+}
+
+double mapping_error(const Mat4& m, const Vec3d& v, bool point) {
+    return 4.0 * unit_roundoff * mapped_magnitude(m, v, point);
 }
 
 ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,

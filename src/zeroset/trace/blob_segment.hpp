@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "zeroset/expr/blob_model.hpp"
-#include "zeroset/math/ray.hpp"
+#include "zeroset/math/box3.hpp"
 #include "zeroset/roots/root_function.hpp"
 #include "zeroset/trace/root_finder.hpp"
 
@@ -47,10 +47,13 @@ struct KernelOnRay {
     std::uint32_t component;
 };
 
-/// The component as the ray sees it, or nothing when the ray stays out of
-/// its reach (u > reach everywhere); t_in and t_out are not clipped.
-std::optional<KernelOnRay> kernel_on_ray(const Ray& ray, const Mat4& to_kernel, double reach, double strength,
-                                         double blobbiness, std::uint32_t component);
+/// Where the ray q(t) = q0 + t·qd in a component's kernel space is within
+/// its reach, |q(t)|² ≤ reach — a hair wider, so that rounding never drops
+/// a component where it still counts — or nothing when it never is.
+std::optional<Span> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach);
+
+/// A bound on the rounding of each coordinate of m·v (m·(v, 1) for a point).
+double mapping_error(const Mat4& m, const Vec3d& v, bool point);
 
 /// What a segment search is given.
 struct BlobSegmentSettings {
