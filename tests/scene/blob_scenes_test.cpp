@@ -94,8 +94,10 @@ TEST(BlobScenes, BadBlobsGetClearErrors) {
               "scene.zs:1:1: a blob needs a component of positive strength (its field never reaches the threshold)");
     EXPECT_EQ(error_of("blob { threshold 0 component { } }"), "scene.zs:1:18: the threshold must be positive");
     EXPECT_EQ(error_of("blob { component { } surface x }"),
-              "scene.zs:1:22: expected a key (kernel, threshold, tolerance, component, method, normals, partition or "
-              "material), a transform, let, for or '}' but found 'surface'");
+              "scene.zs:1:22: expected a key (kernel, threshold, tolerance, quadratics, component, method, normals, "
+              "partition or material), a transform, let, for or '}' but found 'surface'");
+    EXPECT_EQ(error_of("blob { quadratics on component { } }"),
+              "scene.zs:1:8: quadratics (the survey's approximation by quadratic pieces) is for the metaball kernel only");
 }
 
 }  // namespace

@@ -38,7 +38,10 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
     std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
     window_ = sizes[sizes.size() / 2];
     const RootFinderSettings tolerances = settings_for_scale(scale_);
-    settings_ = {m.kernel(), m.threshold(), tolerances.tangent_width, tolerances.max_segments};
+    if (description_.metaball_quadratics && m.kernel() != BlobKernel::Metaball)
+        throw std::invalid_argument("the quadratic approximation is for metaballs only");
+    settings_ = {m.kernel(), m.threshold(), tolerances.tangent_width, tolerances.max_segments,
+                 description_.metaball_quadratics};
     stats_.components = components_.size();
     stats_.bvh_nodes = bvh_->node_count();
     stats_.bytes = components_.size() * (sizeof(Component) + sizeof(Box3) + sizeof(BlobComponent)) +
@@ -84,15 +87,21 @@ void Blob::gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, Tr
         if (k && k->t_out >= t_min && k->t_in <= t_max) {
             const auto index = static_cast<std::uint32_t>(s.kernels.size());
             s.kernels.push_back(*k);
-            s.events.push_back({std::max(k->t_in, t_min), index, true});
-            s.events.push_back({std::min(k->t_out, t_max), index, false});
+            using Kind = BlobScratch::Event::Kind;
+            s.events.push_back({std::max(k->t_in, t_min), index, Kind::Enter});
+            s.events.push_back({std::min(k->t_out, t_max), index, Kind::Exit});
+            if (settings_.metaball_quadratics) {
+                const MetaballPieces pieces = metaball_pieces(*k);
+                for (int j = 1; j + 1 < pieces.count; ++j)
+                    if (pieces.ends[j] > t_min && pieces.ends[j] < t_max) s.events.push_back({pieces.ends[j], index, Kind::Piece});
+            }
         }
         return limit;  // every component along the ray: the events need them all
     });
     scratch.counters.blob_kernels += s.kernels.size();
     // By t; at equal t entries first, so a component's own entry precedes its exit.
     std::sort(s.events.begin(), s.events.end(), [](const BlobScratch::Event& a, const BlobScratch::Event& b) {
-        return a.t < b.t || (a.t == b.t && a.enters && !b.enters);
+        return a.t < b.t || (a.t == b.t && a.kind < b.kind);
     });
 }
 
@@ -105,10 +114,10 @@ void Blob::sweep(BlobScratch& s, OnSegment&& on_segment) const {
         const double ta = events[i].t;
         for (; i < events.size() && events[i].t == ta; ++i) {
             const std::uint32_t k = events[i].kernel;
-            if (events[i].enters) {
+            if (events[i].kind == BlobScratch::Event::Kind::Enter) {
                 s.position[k] = static_cast<std::uint32_t>(s.active.size());
                 s.active.push_back(k);
-            } else {  // swap with the last and drop it
+            } else if (events[i].kind == BlobScratch::Event::Kind::Exit) {  // swap with the last and drop it
                 const std::uint32_t at = s.position[k], last = s.active.back();
                 s.active[at] = last;
                 s.position[last] = at;

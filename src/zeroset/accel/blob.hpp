@@ -31,6 +31,10 @@ struct BlobDescription {
     double tolerance = default_blinn_tolerance;
     /// Threads for building the BVH (0: all cores).
     int threads = 0;
+    /// Metaballs only: solve the survey's approximation (§3.1) — each
+    /// component's contribution along the ray as quadratic pieces in t —
+    /// instead of the exact kernel.
+    bool metaball_quadratics = false;
 };
 
 /// What a thread writes while it traces a blob (one at a time: a blob's
@@ -38,9 +42,10 @@ struct BlobDescription {
 struct BlobScratch {
     std::vector<KernelOnRay> kernels;  // the components the ray meets
     struct Event {
+        enum class Kind : std::uint8_t { Enter, Piece, Exit };  // Piece: a metaball's quadratic piece ends
         double t;
         std::uint32_t kernel;  // into kernels
-        bool enters;
+        Kind kind;
     };
     std::vector<Event> events;
     std::vector<std::uint32_t> active;    // kernels in reach on the current segment
@@ -76,6 +81,7 @@ public:
     [[nodiscard]] const BlobModel& model() const { return *description_.model; }
     [[nodiscard]] const BlobStats& stats() const { return stats_; }
     [[nodiscard]] double tolerance() const { return description_.tolerance; }
+    [[nodiscard]] bool quadratics() const { return description_.metaball_quadratics; }
     /// f and ∇f at a point, over the components in reach (for tests and normals).
     [[nodiscard]] double value_at(const Vec3d& p) const;
     [[nodiscard]] Vec3d gradient_at(const Vec3d& p) const;

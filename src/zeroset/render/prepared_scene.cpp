@@ -80,9 +80,10 @@ std::string PreparedScene::blob_summary() const {
     for (const Blob* blob : blobs_) {
         const BlobStats& s = blob->stats();
         const BlobKernelInfo& kernel = blob_kernel_info(blob->model().kernel());
-        const std::string solved = kernel.polynomial.empty()
-                                       ? "interval isolation"
-                                       : "exact degree-" + std::to_string(2 * (kernel.polynomial.size() - 1)) + " polynomials, guarded";
+        const std::string solved = blob->quadratics()          ? "the survey's quadratic pieces (approximate)"
+                                   : kernel.polynomial.empty() ? "interval isolation"
+                                                               : "exact degree-" + std::to_string(2 * (kernel.polynomial.size() - 1)) +
+                                                                     " polynomials, guarded";
         char buffer[320];
         std::snprintf(buffer, sizeof buffer, "'%s' blob: %zu %s components, %s segments, BVH %zu nodes, %.1f MB",
                       blob->name().c_str(), s.components, std::string(kernel.name).c_str(), solved.c_str(),
@@ -132,6 +133,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
                 b.model = o.blob;
                 b.material = around;
                 b.tolerance = o.blob_tolerance;
+                b.metaball_quadratics = o.blob_quadratics;
                 around = no_material;
                 try {
                     auto blob = std::make_shared<const Blob>(std::move(b));

@@ -14,8 +14,8 @@ namespace zeroset {
 namespace {
 
 constexpr std::array<std::string_view, 5> transform_keys{"translate", "rotate", "scale", "shear", "matrix"};
-constexpr std::array<std::string_view, 8> blob_keys{"kernel", "threshold", "tolerance", "component",
-                                                    "method", "normals",   "partition", "material"};
+constexpr std::array<std::string_view, 9> blob_keys{"kernel",  "threshold", "tolerance", "quadratics", "component",
+                                                    "method",  "normals",   "partition", "material"};
 constexpr std::array<std::string_view, 4> component_keys{"center", "radius", "strength", "blobbiness"};
 
 bool is_one_of(std::span<const std::string_view> names, std::string_view word) {
@@ -106,6 +106,11 @@ bool SceneParser::blob_entry(BlobReading& reading) {
         const auto [t, where] = number("the tolerance");
         if (!(t > 0.0 && t < 1.0)) in_->fail(where, "the tolerance must lie strictly between 0 and 1");
         object.blob_tolerance = t;
+    } else if (word == "quadratics") {
+        const bool on = on_off("quadratics");
+        if (on && reading.kernel != BlobKernel::Metaball)
+            in_->fail(entry.where, "quadratics (the survey's approximation by quadratic pieces) is for the metaball kernel only");
+        object.blob_quadratics = on;
     } else if (word == "component") {
         if (++objects_ > limits_.objects)
             in_->fail(entry.where, "the scene makes more than " + std::to_string(limits_.objects) +

@@ -66,6 +66,7 @@ struct Object {
     /// writes the field when a general method asks for it) and `bounds` is its reach.
     std::shared_ptr<const BlobModel> blob;
     double blob_tolerance = default_blinn_tolerance;  // Blinn's cut-off, relative to the threshold
+    bool blob_quadratics = false;  // metaballs: the survey's quadratic pieces instead of the exact kernel
 };
 
 /// The object's f: its surface, or a blob's field as an expression.

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "zeroset/math/interval.hpp"
+#include "zeroset/roots/closed_form.hpp"
 #include "zeroset/roots/fast_polynomial.hpp"
 #include "zeroset/roots/polynomial_enclosure.hpp"
 #include "zeroset/roots/refine.hpp"
@@ -171,9 +172,19 @@ int BlobSegmentSolver::polynomial(std::span<const KernelOnRay> kernels, std::spa
     return n;
 }
 
+MetaballPieces metaball_pieces(const KernelOnRay& k) {
+    const double a2 = dot(k.qd, k.qd), nearest = -dot(k.q0, k.qd) / a2;
+    const Vec3d closest = k.q0 + nearest * k.qd;
+    const double u_min = dot(closest, closest);
+    if (!(u_min < 1.0 / 9.0)) return {{k.t_in, nearest, k.t_out, 0.0, 0.0}, 3};
+    const double inner = std::sqrt((1.0 / 9.0 - u_min) / a2);
+    return {{k.t_in, nearest - inner, nearest, nearest + inner, k.t_out}, 5};
+}
+
 HitStatus BlobSegmentSolver::roots(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active,
                                    double ta, double tb, bool first_only, std::vector<double>& roots,
                                    TraceCounters& counters) const {
+    if (settings_.metaball_quadratics) return quadratic_roots(kernels, active, ta, tb, first_only, roots, counters);
     if (blob_kernel_info(settings_.kernel).polynomial.empty())
         return interval_roots(kernels, active, ta, tb, first_only, roots, counters);
     return polynomial_roots(kernels, active, ta, tb, first_only, roots, counters);
@@ -210,6 +221,42 @@ HitStatus BlobSegmentSolver::polynomial_roots(std::span<const KernelOnRay> kerne
     counters.point_evaluations += static_cast<std::uint64_t>(evaluations);
     for (int i = 0; i < count; ++i) roots.push_back(at(found[static_cast<std::size_t>(i)]));
     return count > 0 ? HitStatus::Ok : HitStatus::NoHit;
+}
+
+HitStatus BlobSegmentSolver::quadratic_roots(std::span<const KernelOnRay> kernels,
+                                             std::span<const std::uint32_t> active, double ta, double tb,
+                                             bool first_only, std::vector<double>& roots,
+                                             TraceCounters& counters) const {
+    // Σ of each component's quadratic piece over the segment, in τ = t − t_c.
+    const double t_c = 0.5 * ta + 0.5 * tb;
+    std::array<double, 3> f{settings_.threshold, 0.0, 0.0};
+    for (const std::uint32_t i : active) {
+        const KernelOnRay& k = kernels[i];
+        const MetaballPieces pieces = metaball_pieces(k);
+        int j = 0;
+        while (j + 2 < pieces.count && pieces.ends[static_cast<std::size_t>(j + 1)] <= t_c) ++j;
+        const double p0 = pieces.ends[static_cast<std::size_t>(j)], p1 = pieces.ends[static_cast<std::size_t>(j + 1)];
+        const auto K = [&](double t) {
+            const Vec3d q = k.q0 + t * k.qd;
+            return kernel_at(BlobKernel::Metaball, dot(q, q), 0.0).value;
+        };
+        // The quadratic through K at the piece's ends and middle (exact where K = 1 − 3u).
+        const double h = 0.5 * (p1 - p0), pm = p0 + h;
+        const double k0 = K(p0), km = K(pm), k1 = K(p1);
+        const double c2 = h > 0.0 ? (k0 - 2.0 * km + k1) / (2.0 * h * h) : 0.0;
+        const double c1 = h > 0.0 ? (k1 - k0) / (2.0 * h) : 0.0;
+        // About pm, then moved to t_c: c0 + c1·(τ + d) + c2·(τ + d)², d = t_c − pm.
+        const double d = t_c - pm;
+        f[0] -= k.strength * (km + c1 * d + c2 * d * d);
+        f[1] -= k.strength * (c1 + 2.0 * c2 * d);
+        f[2] -= k.strength * c2;
+        counters.point_evaluations += 3;
+    }
+    std::array<double, max_closed_form_degree> found{};
+    const int count = closed_form_roots_in(f, ta - t_c, tb - t_c, found);
+    if (count == 0) return HitStatus::NoHit;
+    for (int i = 0; i < (first_only ? 1 : count); ++i) roots.push_back(std::clamp(t_c + found[static_cast<std::size_t>(i)], ta, tb));
+    return HitStatus::Ok;
 }
 
 HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels,

@@ -63,7 +63,20 @@ struct BlobSegmentSettings {
     double tangent_width;
     /// Interval segments one search may visit before it fails.
     long max_segments;
+    /// Metaballs: solve the survey's quadratic pieces (metaball_pieces) instead of the exact kernel.
+    bool metaball_quadratics = false;
 };
+
+/// Nishimura's approximation (survey §3.1): a metaball's contribution along
+/// the ray in four quadratic pieces of t — between its entry, ρ = 1/3, its
+/// nearest approach, ρ = 1/3 again and its exit. The inner pieces (ρ < 1/3,
+/// K = 1 − 3u) are exact; the outer ones interpolate K at their ends and
+/// middle. A ray that misses the inner ball has two pieces.
+struct MetaballPieces {
+    std::array<double, 5> ends;  // increasing: piece j is [ends[j], ends[j + 1]]
+    int count;                   // of ends (3 or 5)
+};
+MetaballPieces metaball_pieces(const KernelOnRay& k);
 
 /// f and f′ at t over the given components (those out of reach add 0).
 ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
@@ -95,6 +108,8 @@ public:
 private:
     HitStatus polynomial_roots(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active, double ta,
                                double tb, bool first_only, std::vector<double>& roots, TraceCounters& counters) const;
+    HitStatus quadratic_roots(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active, double ta,
+                              double tb, bool first_only, std::vector<double>& roots, TraceCounters& counters) const;
     HitStatus interval_roots(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active, double ta,
                              double tb, bool first_only, std::vector<double>& roots, TraceCounters& counters) const;
 

@@ -1,0 +1,75 @@
+// The blob scenes of scenes/blobs/ rendered small: each one shows its
+// object; the survey's figures written as blobs cover the pixels their
+// expression versions cover; and a blob traced by a general method (its
+// field as an expression) covers the pixels its own exact path does.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "zeroset/render/renderer.hpp"
+#include "zeroset/scene/load_scene.hpp"
+
+namespace zeroset {
+namespace {
+
+/// Which pixels show an object rather than the background.
+std::vector<bool> coverage(const Scene& scene, int width, int height, std::optional<Method> method = {}) {
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.method = method;
+    const RenderResult r = render(scene, settings);
+    std::vector<bool> mask;
+    const Vec3d bg = scene.background;
+    for (const auto& p : r.image.pixels)
+        mask.push_back(!(p.x == static_cast<float>(bg.x) && p.y == static_cast<float>(bg.y) &&
+                         p.z == static_cast<float>(bg.z)));
+    return mask;
+}
+
+double covered(const std::vector<bool>& mask) {
+    return static_cast<double>(std::count(mask.begin(), mask.end(), true)) / static_cast<double>(mask.size());
+}
+
+double differing(const std::vector<bool>& a, const std::vector<bool>& b) {
+    int n = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
+    return static_cast<double>(n) / static_cast<double>(a.size());
+}
+
+Scene scene_file(const std::string& path) { return load_scene(ZEROSET_SOURCE_DIR "/scenes/" + path); }
+
+TEST(BlobScenes, EveryOneShowsItsBlob) {
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(ZEROSET_SOURCE_DIR "/scenes/blobs")) {
+        const Scene scene = load_scene(entry.path());
+        const double part = covered(coverage(scene, 96, 72));
+        std::printf("%s: %.1f %% of the pixels covered\n", entry.path().filename().c_str(), 100.0 * part);
+        EXPECT_GT(part, 0.05) << entry.path();
+        EXPECT_LT(part, 1.0) << entry.path();
+        ++scenes;
+    }
+    EXPECT_GE(scenes, 4);
+}
+
+TEST(BlobScenes, TheSurveysFiguresAsBlobsCoverWhatTheirExpressionsCover) {
+    for (const auto& [blob, expression] : {std::pair{"blobs/figure1_blinn.zs", "hart1993/blinn_blobs.zs"},
+                                           std::pair{"blobs/figure8_soft.zs", "hart1993/soft_objects.zs"}}) {
+        const std::vector<bool> a = coverage(scene_file(blob), 160, 120), b = coverage(scene_file(expression), 160, 120);
+        EXPECT_GT(covered(a), 0.1) << blob;
+        EXPECT_LE(differing(a, b), 0.001) << blob;
+    }
+}
+
+TEST(BlobScenes, GeneralMethodsOnTheSameBlobCoverWhatItsOwnPathCovers) {
+    const Scene scene = scene_file("blobs/figure8_soft.zs");
+    const std::vector<bool> own = coverage(scene, 160, 120);
+    for (const Method m : {Method::Interval, Method::Lg}) {
+        const std::vector<bool> general = coverage(scene, 160, 120, m);
+        EXPECT_LE(differing(own, general), 0.001) << method_name(m);
+    }
+}
+
+}  // namespace
+}  // namespace zeroset
