@@ -12,6 +12,15 @@
 
 namespace zeroset {
 
+namespace {
+
+/// The events' heap order: the earliest on top, and at equal t entries first.
+bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
+    return a.t > b.t || (a.t == b.t && a.kind > b.kind);
+}
+
+}  // namespace
+
 Blob::Blob(BlobDescription description) : description_(std::move(description)) {
     const BlobModel& m = model();
     if (!(description_.tolerance > 0.0 && description_.tolerance < 1.0))
@@ -32,11 +41,6 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
     }
     bvh_ = std::make_unique<Bvh>(boxes, description_.threads);
     scale_ = std::max(bounds_.diagonal(), 1e-300);
-    // The first window of a ray: the median reach box's diagonal.
-    std::vector<double> sizes;
-    for (const Box3& b : boxes) sizes.push_back(b.diagonal());
-    std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
-    window_ = sizes[sizes.size() / 2];
     const RootFinderSettings tolerances = settings_for_scale(scale_);
     if (description_.metaball_quadratics && m.kernel() != BlobKernel::Metaball)
         throw std::invalid_argument("the quadratic approximation is for metaballs only");
@@ -83,47 +87,21 @@ void Blob::gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, Tr
     s.kernels.clear();
     s.events.clear();
     bvh_->traverse(ray, t_min, t_max, [&](std::uint32_t i, double limit) {
-        const auto k = on_ray(ray, i);
-        if (k && k->t_out >= t_min && k->t_in <= t_max) {
-            const auto index = static_cast<std::uint32_t>(s.kernels.size());
-            s.kernels.push_back(*k);
-            using Kind = BlobScratch::Event::Kind;
-            s.events.push_back({std::max(k->t_in, t_min), index, Kind::Enter});
-            s.events.push_back({std::min(k->t_out, t_max), index, Kind::Exit});
-            if (settings_.metaball_quadratics) {
-                const MetaballPieces pieces = metaball_pieces(*k);
-                for (int j = 1; j + 1 < pieces.count; ++j)
-                    if (pieces.ends[j] > t_min && pieces.ends[j] < t_max) s.events.push_back({pieces.ends[j], index, Kind::Piece});
-            }
-        }
+        if (const auto k = on_ray(ray, i); k && k->t_out >= t_min && k->t_in <= t_max) add_events(*k, t_min, t_max, s);
         return limit;  // every component along the ray: the events need them all
     });
     scratch.counters.blob_kernels += s.kernels.size();
     // By t; at equal t entries first, so a component's own entry precedes its exit.
-    std::sort(s.events.begin(), s.events.end(), [](const BlobScratch::Event& a, const BlobScratch::Event& b) {
-        return a.t < b.t || (a.t == b.t && a.kind < b.kind);
-    });
+    std::sort(s.events.begin(), s.events.end(), [](const BlobScratch::Event& a, const BlobScratch::Event& b) { return later(b, a); });
 }
 
 template <class OnSegment>
 void Blob::sweep(BlobScratch& s, OnSegment&& on_segment) const {
     s.active.clear();
-    s.position.resize(s.kernels.size());
     const std::vector<BlobScratch::Event>& events = s.events;
     for (std::size_t i = 0; i < events.size();) {
         const double ta = events[i].t;
-        for (; i < events.size() && events[i].t == ta; ++i) {
-            const std::uint32_t k = events[i].kernel;
-            if (events[i].kind == BlobScratch::Event::Kind::Enter) {
-                s.position[k] = static_cast<std::uint32_t>(s.active.size());
-                s.active.push_back(k);
-            } else if (events[i].kind == BlobScratch::Event::Kind::Exit) {  // swap with the last and drop it
-                const std::uint32_t at = s.position[k], last = s.active.back();
-                s.active[at] = last;
-                s.position[last] = at;
-                s.active.pop_back();
-            }
-        }
+        for (; i < events.size() && events[i].t == ta; ++i) apply(events[i], s);
         if (i == events.size() || s.active.empty()) continue;
         const double tb = events[i].t;
         if (blob_field_upper_bound(settings_, s.kernels, s.active, ta, tb) < settings_.threshold) continue;
@@ -151,50 +129,105 @@ SurfaceRef Blob::surface_at(const Ray& ray, double t, BoundaryKind kind) const {
     return s;
 }
 
+void Blob::add_events(const KernelOnRay& k, double t_min, double t_max, BlobScratch& s) const {
+    using Kind = BlobScratch::Event::Kind;
+    const auto index = static_cast<std::uint32_t>(s.kernels.size());
+    s.kernels.push_back(k);
+    s.events.push_back({std::max(k.t_in, t_min), index, Kind::Enter});
+    s.events.push_back({std::min(k.t_out, t_max), index, Kind::Exit});
+    if (settings_.metaball_quadratics) {
+        const MetaballPieces pieces = metaball_pieces(k);
+        for (int j = 1; j + 1 < pieces.count; ++j) {
+            const double t = pieces.ends[static_cast<std::size_t>(j)];
+            if (t > t_min && t < t_max) s.events.push_back({t, index, Kind::Piece});
+        }
+    }
+}
+
+void Blob::apply(const BlobScratch::Event& e, BlobScratch& s) const {
+    if (e.kind == BlobScratch::Event::Kind::Enter) {
+        s.position.resize(std::max<std::size_t>(s.position.size(), e.kernel + 1));
+        s.position[e.kernel] = static_cast<std::uint32_t>(s.active.size());
+        s.active.push_back(e.kernel);
+    } else if (e.kind == BlobScratch::Event::Kind::Exit) {  // swap with the last and drop it
+        const std::uint32_t at = s.position[e.kernel], last = s.active.back();
+        s.active[at] = last;
+        s.position[last] = at;
+        s.active.pop_back();
+    }
+}
+
 std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
     const auto span = bounds_.clip(ray, t_min, t_max);
     if (!span) return std::nullopt;
     BlobScratch& s = scratch_for(scratch);
+    s.kernels.clear();
+    s.events.clear();
+    s.active.clear();
     const BlobSegmentSolver solver(settings_);
-    // Window by window, each twice as long as the one before: a ray that
-    // hits early never gathers the components far behind the hit, and one
-    // that misses gathers each at most twice over.
-    double window = window_ / length(ray.dir);
-    for (double w0 = span->t0;; window *= 2.0) {
-        const double w1 = std::min(w0 + window, span->t1);
-        gather(ray, w0, w1, s, scratch);
-        if (w0 == t_min && !s.kernels.empty()) {  // the ray may start inside
-            const double start = value_on_ray(s, t_min);
-            if (start <= 0.0)
-                return Hit{t_min, surface_at(ray, t_min, start == 0.0 ? BoundaryKind::Surface : BoundaryKind::Open)};
-        }
-        std::optional<double> hit;
-        bool failed = false;
-        sweep(s, [&](double ta, double tb) {
-            s.roots.clear();
-            if (solver.roots(s.kernels, s.active, ta, tb, true, s.roots, scratch.counters) == HitStatus::Failed) {
-                failed = true;
-                return false;
+    // The BVH hands over the components front to back, with a frontier
+    // before which every component has been seen: the segments before it
+    // are complete and are solved at once, so the search stops at the first
+    // hit without gathering what lies behind it.
+    double done = span->t0;  // the segments before it are solved
+    bool started = false;    // whether the start was checked
+    std::optional<double> hit;
+    bool failed = false;
+    const auto advance = [&](double frontier) {
+        while (!s.events.empty() && s.events.front().t < frontier) {
+            const BlobScratch::Event e = s.events.front();
+            if (e.t > done) {
+                if (!started) {  // every component at t0 is in: is the ray inside already?
+                    started = true;
+                    const double start = value_on_ray(s, span->t0);
+                    if (start <= 0.0) {
+                        hit = span->t0;
+                        return false;
+                    }
+                }
+                if (!s.active.empty() &&
+                    blob_field_upper_bound(settings_, s.kernels, s.active, done, e.t) >= settings_.threshold) {
+                    s.roots.clear();
+                    if (solver.roots(s.kernels, s.active, done, e.t, true, s.roots, scratch.counters) == HitStatus::Failed) {
+                        failed = true;
+                        return false;
+                    }
+                    if (!s.roots.empty()) {
+                        hit = s.roots.front();
+                        return false;
+                    }
+                }
+                done = e.t;
             }
-            if (!s.roots.empty()) hit = s.roots.front();
-            return !hit;
-        });
-        if (failed) {
-            ++scratch.counters.failed_queries;
-            return std::nullopt;
+            std::pop_heap(s.events.begin(), s.events.end(), later);
+            s.events.pop_back();
+            apply(e, s);
         }
-        if (hit) {
-            const Hit h{*hit, surface_at(ray, *hit, BoundaryKind::Surface)};
-            s.hit_blob = this;
-            s.hit_point = h.surface.local_point;
-            s.hit_components.clear();
-            for (const std::uint32_t k : s.active) s.hit_components.push_back(s.kernels[k].component);
-            return h;
+        return true;
+    };
+    bvh_->traverse_in_order(ray, span->t0, span->t1, s.queue, [&](std::uint32_t i, double limit) {
+        if (i == Bvh::frontier) return advance(limit) ? span->t1 : -std::numeric_limits<double>::infinity();
+        if (const auto k = on_ray(ray, i); k && k->t_out >= span->t0 && k->t_in <= span->t1) {
+            const std::size_t before = s.events.size();
+            add_events(*k, span->t0, span->t1, s);
+            for (std::size_t j = before; j < s.events.size(); ++j)
+                std::push_heap(s.events.begin(), s.events.begin() + static_cast<std::ptrdiff_t>(j) + 1, later);
         }
-        if (w1 >= span->t1) break;
-        w0 = w1;
+        return limit;
+    });
+    scratch.counters.blob_kernels += s.kernels.size();
+    if (failed) {
+        ++scratch.counters.failed_queries;
+        return std::nullopt;
     }
-    return std::nullopt;
+    if (!hit) return std::nullopt;
+    const bool inside = *hit == span->t0 && value_on_ray(s, span->t0) < 0.0;
+    const Hit h{*hit, surface_at(ray, *hit, inside ? BoundaryKind::Open : BoundaryKind::Surface)};
+    s.hit_blob = this;
+    s.hit_point = h.surface.local_point;
+    s.hit_components.clear();
+    for (const std::uint32_t k : s.active) s.hit_components.push_back(s.kernels[k].component);
+    return h;
 }
 
 void Blob::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {

@@ -51,6 +51,7 @@ struct BlobScratch {
     std::vector<std::uint32_t> active;    // kernels in reach on the current segment
     std::vector<std::uint32_t> position;  // each kernel's place in active
     std::vector<double> roots;
+    Bvh::Queue queue;  // first_hit's traversal
     /// The last hit found and the components in reach there, which give its
     /// normal when it is shaded next (as it usually is) without a search.
     const void* hit_blob = nullptr;
@@ -101,6 +102,10 @@ private:
     [[nodiscard]] std::optional<KernelOnRay> on_ray(const Ray& ray, std::uint32_t i) const;
 
     BlobScratch& scratch_for(TraceScratch& scratch) const;
+    /// Adds a component the ray meets to s.kernels and its events, clipped to [t_min, t_max], to s.events.
+    void add_events(const KernelOnRay& k, double t_min, double t_max, BlobScratch& s) const;
+    /// An event's change to the components in reach (s.active).
+    void apply(const BlobScratch::Event& e, BlobScratch& s) const;
     /// The components the ray meets within [t_min, t_max], into s.kernels, and their events, sorted.
     void gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, TraceScratch& scratch) const;
     /// Calls on_segment(ta, tb) for each segment with components in reach
@@ -122,7 +127,6 @@ private:
     std::vector<Component> components_;
     Box3 bounds_;
     double scale_ = 1.0;   // the bounds' diagonal
-    double window_ = 1.0;  // the length first_hit gathers components over first
     std::unique_ptr<Bvh> bvh_;
     BlobStats stats_;
 };

@@ -310,6 +310,61 @@ template <class Test>
     }
 }
 
+template <class Test>
+[[gnu::always_inline]] inline void Bvh::walk_in_order(const Ray& ray, double t_min, double t_max, Queue& queue,
+                                                      Visitor visit, void* context) const {
+    queue.clear();
+    const auto root_span = order_.empty() ? std::nullopt : root_box_.clip(ray, t_min, t_max);
+    if (root_span) {
+        const auto inverse = [](double d) { return d != 0.0 ? 1.0 / d : std::copysign(1e300, d); };
+        const RayInverse r{ray.origin, {inverse(ray.dir.x), inverse(ray.dir.y), inverse(ray.dir.z)}};
+        const auto later = [](const QueueEntry& a, const QueueEntry& b) { return a.t_enter > b.t_enter; };
+        queue.push_back({root_span->t0, root_.index, root_.count});
+        while (!queue.empty()) {
+            std::pop_heap(queue.begin(), queue.end(), later);
+            const QueueEntry p = queue.back();
+            queue.pop_back();
+            if (p.t_enter > t_max) break;  // and so is every entry after it
+            t_max = visit(context, frontier, p.t_enter);
+            if (t_max < t_min) return;
+            if (p.count > 0) {
+                for (std::uint32_t k = 0; k < p.count && t_max >= t_min; ++k) t_max = visit(context, order_[p.index + k], t_max);
+                if (t_max < t_min) return;
+                continue;
+            }
+            const Node& node = nodes_[p.index];
+            double t_in[width], t_out[width];
+            Test::run(node, r, t_min, t_max, t_in, t_out);
+            for (int c = 0; c < width; ++c) {
+                if (!(t_in[c] <= t_out[c]) || node.child[c].index == empty_slot) continue;
+                queue.push_back({t_in[c], node.child[c].index, node.child[c].count});
+                std::push_heap(queue.begin(), queue.end(), later);
+            }
+        }
+    }
+    visit(context, frontier, std::numeric_limits<double>::infinity());
+}
+
+#if defined(__GNUC__) && defined(__x86_64__)
+__attribute__((target("arch=x86-64-v3"))) void Bvh::traverse_in_order_avx2(const Ray& ray, double t_min,
+                                                                            double t_max, Queue& queue,
+                                                                            Visitor visit, void* context) const {
+    walk_in_order<FourLanes>(ray, t_min, t_max, queue, visit, context);
+}
+
+void Bvh::traverse_in_order(const Ray& ray, double t_min, double t_max, Queue& queue, Visitor visit,
+                            void* context) const {
+    static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    if (avx2) traverse_in_order_avx2(ray, t_min, t_max, queue, visit, context);
+    else walk_in_order<TwoPairs>(ray, t_min, t_max, queue, visit, context);
+}
+#else
+void Bvh::traverse_in_order(const Ray& ray, double t_min, double t_max, Queue& queue, Visitor visit,
+                            void* context) const {
+    walk_in_order<TwoPairs>(ray, t_min, t_max, queue, visit, context);
+}
+#endif
+
 #if defined(__GNUC__) && defined(__x86_64__)
 // The traversal compiled for AVX2 (x86-64-v3) as well, chosen by the CPU
 // when it first runs: its four-lane slab test is about 1.3 times faster than

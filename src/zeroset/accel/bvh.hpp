@@ -47,6 +47,33 @@ public:
     using Visitor = double (*)(void* context, std::uint32_t index, double t_max);
     void traverse(const Ray& ray, double t_min, double t_max, Visitor visit, void* context) const;
 
+    /// The nodes an in-order traversal still has to open, by entry t: the
+    /// caller's, so that a traversal allocates nothing once it has grown.
+    struct QueueEntry {
+        double t_enter;
+        std::uint32_t index;
+        std::uint32_t count;
+    };
+    using Queue = std::vector<QueueEntry>;
+    /// The index traverse_in_order's visitor gets with a frontier.
+    static constexpr std::uint32_t frontier = ~std::uint32_t{0};
+
+    /// Visits the boxes the ray enters within [t_min, t_max] in the order of
+    /// their nodes' entry, nearest first, over a priority queue. Before each
+    /// node is opened, `visit(frontier, t)` says that every box not visited
+    /// yet enters at t or later (t = +∞ at the end), so that what lies before
+    /// t is complete; `visit(i, t_max)` visits box i. Both return the new
+    /// t_max (a value below t_min ends the traversal).
+    template <class Visit>
+    void traverse_in_order(const Ray& ray, double t_min, double t_max, Queue& queue, Visit&& visit) const {
+        using V = std::remove_reference_t<Visit>;
+        traverse_in_order(
+            ray, t_min, t_max, queue, [](void* f, std::uint32_t i, double t) { return (*static_cast<V*>(f))(i, t); },
+            static_cast<void*>(&visit));
+    }
+    void traverse_in_order(const Ray& ray, double t_min, double t_max, Queue& queue, Visitor visit,
+                           void* context) const;
+
     [[nodiscard]] std::size_t node_count() const { return nodes_.size(); }
     [[nodiscard]] std::size_t depth() const { return depth_; }
     [[nodiscard]] bool empty() const { return order_.empty(); }
@@ -74,6 +101,10 @@ private:
     template <class SlabTest>
     void walk(const Ray& ray, double t_min, double t_max, Visitor visit, void* context) const;
     void traverse_avx2(const Ray& ray, double t_min, double t_max, Visitor visit, void* context) const;
+    template <class SlabTest>
+    void walk_in_order(const Ray& ray, double t_min, double t_max, Queue& queue, Visitor visit, void* context) const;
+    void traverse_in_order_avx2(const Ray& ray, double t_min, double t_max, Queue& queue, Visitor visit,
+                                void* context) const;
     [[nodiscard]] Child child_of(const BuildNode& node, std::size_t depth);
 
     std::vector<Node> nodes_;
