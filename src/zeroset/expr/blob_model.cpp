@@ -123,6 +123,8 @@ Interval kernel_over(BlobKernel kernel, const Interval& u, double blobbiness) {
 }
 
 Interval kernel_slope_over(BlobKernel kernel, const Interval& u, double blobbiness) {
+    // Blinn's slope is B·K, so one enclosure serves both.
+    if (kernel == BlobKernel::Blinn) return Interval(blobbiness) * kernel_over(kernel, u, blobbiness);
     // Every kernel's slope increases in u ≥ 0 (it is convex there).
     return {kernel_slope<Interval>(kernel, u.lo, blobbiness).lo, kernel_slope<Interval>(kernel, u.hi, blobbiness).hi};
 }

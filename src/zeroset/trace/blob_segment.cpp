@@ -85,8 +85,12 @@ Enclosure enclose(const BlobSegmentSettings& s, std::span<const KernelOnRay> ker
             du += 2.0 * q * qd;
         }
         u.lo = std::max(u.lo, 0.0);
-        field += k.strength * kernel_over(s.kernel, u, k.blobbiness);
-        field_slope += k.strength * (kernel_slope_over(s.kernel, u, k.blobbiness) * du);
+        const Interval K = kernel_over(s.kernel, u, k.blobbiness);
+        // Blinn's slope is B·K: no second enclosure of the exponential.
+        const Interval slope = s.kernel == BlobKernel::Blinn ? Interval(k.blobbiness) * K
+                                                             : kernel_slope_over(s.kernel, u, k.blobbiness);
+        field += k.strength * K;
+        field_slope += k.strength * (slope * du);
     }
     return {s.threshold - field, -field_slope};
 }
