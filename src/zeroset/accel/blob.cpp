@@ -35,7 +35,7 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
         const double reach = m.reach(i, description_.tolerance);
         if (!(reach > 0.0)) continue;  // a Gaussian too weak to count anywhere
         const bool sphere = c.shape == Mat4::identity();
-        components_.push_back({m.to_kernel(i), reach, c.strength, c.blobbiness, sphere, c.center, 1.0 / c.radius});
+        components_.push_back({static_cast<std::uint32_t>(i), sphere, reach, c.strength, c.blobbiness, c.center, 1.0 / c.radius});
         boxes.push_back(m.reach_box(i, reach));
         stats_.reach_radius = std::max(stats_.reach_radius, std::sqrt(reach));
     }
@@ -48,7 +48,8 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
                  description_.metaball_quadratics};
     stats_.components = components_.size();
     stats_.bvh_nodes = bvh_->node_count();
-    stats_.bytes = components_.size() * (sizeof(Component) + sizeof(Box3) + sizeof(BlobComponent)) +
+    // The model's components and maps, the prepared ones, the BVH's nodes and leaf order.
+    stats_.bytes = m.components().size() * (sizeof(BlobComponent) + sizeof(Mat4)) + components_.size() * sizeof(Component) +
                    bvh_->node_count() * 128 + components_.size() * sizeof(std::uint32_t);
 }
 
@@ -65,8 +66,8 @@ std::optional<KernelOnRay> Blob::on_ray(const Ray& ray, std::uint32_t i) const {
         q0 = (ray.origin - c.center) * c.inverse_radius;
         qd = ray.dir * c.inverse_radius;
     } else {
-        q0 = c.to_kernel.transform_point(ray.origin);
-        qd = c.to_kernel.transform_vector(ray.dir);
+        q0 = to_kernel(c).transform_point(ray.origin);
+        qd = to_kernel(c).transform_vector(ray.dir);
     }
     const std::optional<Span> reach = reach_on_ray(q0, qd, c.reach);
     if (!reach) return std::nullopt;
@@ -77,8 +78,8 @@ std::optional<KernelOnRay> Blob::on_ray(const Ray& ray, std::uint32_t i) const {
         k.q0_error = u4 * (largest(ray.origin) + largest(c.center)) * c.inverse_radius;
         k.qd_error = u4 * largest(ray.dir) * c.inverse_radius;
     } else {
-        k.q0_error = mapping_error(c.to_kernel, ray.origin, true);
-        k.qd_error = mapping_error(c.to_kernel, ray.dir, false);
+        k.q0_error = mapping_error(to_kernel(c), ray.origin, true);
+        k.qd_error = mapping_error(to_kernel(c), ray.dir, false);
     }
     return k;
 }
@@ -268,7 +269,7 @@ void Blob::components_at(const Vec3d& p, Visit&& visit) const {
 double Blob::value_at(const Vec3d& p) const {
     double field = 0.0;
     components_at(p, [&](const Component& c) {
-        const Vec3d q = c.to_kernel.transform_point(p);
+        const Vec3d q = to_kernel(c).transform_point(p);
         const double u = dot(q, q);
         if (u <= c.reach) field += c.strength * kernel_at(settings_.kernel, u, c.blobbiness).value;
     });
@@ -282,11 +283,11 @@ Vec3d Blob::gradient_at(const Vec3d& p) const {
 }
 
 Vec3d Blob::gradient_from(const Vec3d& p, const Component& c) const {
-    const Vec3d q = c.to_kernel.transform_point(p);
+    const Vec3d q = to_kernel(c).transform_point(p);
     const double u = dot(q, q);
     if (u > c.reach) return {};
     // ∇u = 2·Mᵀq; f = T − Σ s·K(u)
-    return -(c.strength * kernel_at(settings_.kernel, u, c.blobbiness).slope * 2.0) * c.to_kernel.transpose_transform_vector(q);
+    return -(c.strength * kernel_at(settings_.kernel, u, c.blobbiness).slope * 2.0) * to_kernel(c).transpose_transform_vector(q);
 }
 
 Vec3d Blob::local_normal(const SurfaceRef& surface, TraceScratch& scratch) const {

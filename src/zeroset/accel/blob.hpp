@@ -90,14 +90,15 @@ public:
 private:
     /// One component, prepared.
     struct Component {
-        Mat4 to_kernel;
-        double reach;  // u up to which it counts
+        std::uint32_t index;  // in the model (its to_kernel map)
+        bool sphere;          // its map is (p − center)/R: applied without the matrix
+        double reach;         // u up to which it counts
         double strength;
         double blobbiness;
-        bool sphere;            // to_kernel is (p − center)/R: mapped without the matrix
         Vec3d center;
         double inverse_radius;
     };
+    [[nodiscard]] const Mat4& to_kernel(const Component& c) const { return model().to_kernel(c.index); }
     /// The component as the ray sees it, if the ray comes within its reach.
     [[nodiscard]] std::optional<KernelOnRay> on_ray(const Ray& ray, std::uint32_t i) const;
 

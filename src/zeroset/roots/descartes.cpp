@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "zeroset/roots/bernstein.hpp"
 #include "zeroset/roots/refine.hpp"
 
 namespace zeroset {
@@ -14,56 +15,11 @@ namespace {
 
 constexpr std::size_t at(int i) { return static_cast<std::size_t>(i); }
 
-/// Binomial coefficients C(n, k) for n ≤ 32, exact in doubles.
-constexpr auto binomials = [] {
-    std::array<PolynomialScratch, max_polynomial_degree + 1> b{};
-    for (std::size_t n = 0; n < b.size(); ++n) {
-        b[n][0] = 1.0;
-        for (std::size_t k = 1; k <= n; ++k) b[n][k] = b[n - 1][k - 1] + (k < n ? b[n - 1][k] : 0.0);
-    }
-    return b;
-}();
-
 /// A piece [a, b] of [t0, t1] and p's Bernstein coefficients on it.
 struct Piece {
     double a, b;
     PolynomialScratch bernstein;
 };
-
-/// The coefficients of p on [0, 1] mapped to [t0, t1], in the Bernstein basis.
-PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, double t1, double& magnitude) {
-    // Taylor shift to t0 (repeated synthetic division), then scale by t1 − t0;
-    // the same on |cᵢ| and |t0| gives the scale of each result's rounding.
-    PolynomialScratch a{};
-    PolynomialScratch abs_a{};
-    std::copy(p.begin(), p.end(), a.begin());
-    for (int i = 0; i <= n; ++i) abs_a[at(i)] = std::abs(a[at(i)]);
-    for (int i = 0; i < n; ++i) {
-        for (int j = n - 1; j >= i; --j) {
-            a[at(j)] += t0 * a[at(j + 1)];
-            abs_a[at(j)] += std::abs(t0) * abs_a[at(j + 1)];
-        }
-    }
-    double scale = 1.0;
-    for (int i = 0; i <= n; ++i, scale *= t1 - t0) {
-        a[at(i)] *= scale;
-        abs_a[at(i)] *= scale;
-    }
-    PolynomialScratch b{};
-    magnitude = 0.0;
-    for (int k = 0; k <= n; ++k) {
-        double sum = 0.0;
-        double abs_sum = 0.0;
-        for (int i = 0; i <= k; ++i) {
-            const double weight = binomials[at(k)][at(i)] / binomials[at(n)][at(i)];
-            sum += weight * a[at(i)];
-            abs_sum += weight * abs_a[at(i)];
-        }
-        b[at(k)] = sum;
-        magnitude = std::max(magnitude, abs_sum);
-    }
-    return b;
-}
 
 /// Splits the Bernstein coefficients of one piece at its middle (de Casteljau).
 void subdivide(const PolynomialScratch& b, int n, PolynomialScratch& left, PolynomialScratch& right) {
@@ -115,9 +71,8 @@ PolynomialRoots descartes_roots(std::span<const double> c, double t0, double t1,
     std::size_t top = 0;
     stack[top++] = {t0, t1, to_bernstein(p, n, t0, t1, magnitude)};
     ++result.evaluations;
-    // Rounding error of the conversion, n roundings of terms of that size;
-    // de Casteljau only averages, which adds little.
-    const double noise = 2.0 * static_cast<double>(n + 1) * std::numeric_limits<double>::epsilon() * magnitude;
+    // De Casteljau only averages, which adds little to the conversion's rounding.
+    const double noise = bernstein_noise(n, magnitude);
     // Adjacent Zero pieces (a zero at a split point shows on both sides, a
     // double root over several) are one root: the run from zero_run_start to
     // zero_run_end, reported as out[count − 1].
