@@ -6,7 +6,7 @@
 
 #include <cstdio>
 
-#include "zeroset/render/renderer.hpp"
+#include "support/coverage.hpp"
 #include "zeroset/scene/load_scene.hpp"
 
 namespace zeroset {
@@ -19,13 +19,7 @@ std::vector<bool> part_mask(const std::string& file, int width, int height) {
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
-    const RenderResult r = render(scene, settings);
-    std::vector<bool> mask;
-    const Vec3d bg = scene.background;
-    for (const auto& p : r.image.pixels)
-        mask.push_back(!(p.x == static_cast<float>(bg.x) && p.y == static_cast<float>(bg.y) &&
-                         p.z == static_cast<float>(bg.z)));
-    return mask;
+    return test::coverage(scene, settings);
 }
 
 TEST(CsgScenes, FunctionAndRothCsgCoverTheSamePixels) {

@@ -121,13 +121,7 @@ double Blob::value_on_ray(const BlobScratch& s, double t) const {
 }
 
 SurfaceRef Blob::surface_at(const Ray& ray, double t, BoundaryKind kind) const {
-    SurfaceRef s;
-    s.leaf = kind == BoundaryKind::Open ? nullptr : this;
-    s.kind = kind;
-    s.material = description_.material;
-    s.local_point = ray.at(t);
-    s.scale = scale_;
-    return s;
+    return leaf_surface(*this, kind, description_.material, ray.at(t), scale_);
 }
 
 void Blob::add_events(const KernelOnRay& k, double t_min, double t_max, BlobScratch& s) const {

@@ -93,13 +93,7 @@ void ImplicitLeaf::note_nan(const LeafScratch& leaf, std::uint64_t nans_before, 
 }
 
 SurfaceRef ImplicitLeaf::surface_at(const Ray& ray, double t, BoundaryKind kind) const {
-    SurfaceRef s;
-    s.leaf = kind == BoundaryKind::Open ? nullptr : this;
-    s.kind = kind;
-    s.material = description_.material;
-    s.local_point = ray.at(t);
-    s.scale = region_.scale();
-    return s;
+    return leaf_surface(*this, kind, description_.material, ray.at(t), region_.scale());
 }
 
 void ImplicitLeaf::enter_cell(LeafScratch& leaf, const OctreeCell& cell, TraceScratch& scratch) const {

@@ -56,6 +56,19 @@ public:
     [[nodiscard]] virtual const std::string& name() const = 0;
 };
 
+/// The boundary of `leaf` at `point` (no leaf for BoundaryKind::Open), in
+/// the leaf's own space, for an object of size `scale`.
+inline SurfaceRef leaf_surface(const LeafPrimitive& leaf, BoundaryKind kind, MaterialId material, const Vec3d& point,
+                               double scale) {
+    SurfaceRef s;
+    s.leaf = kind == BoundaryKind::Open ? nullptr : &leaf;
+    s.kind = kind;
+    s.material = material;
+    s.local_point = point;
+    s.scale = scale;
+    return s;
+}
+
 /// True when every coordinate of the box is finite.
 inline bool is_bounded(const Box3& box) {
     return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.lo.z) && std::isfinite(box.hi.x) &&

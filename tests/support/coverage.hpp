@@ -1,0 +1,22 @@
+// Which pixels of a render show an object rather than the background: the
+// masks the whole-render tests compare (two ways of building one object
+// must cover the same pixels).
+#pragma once
+
+#include <vector>
+
+#include "zeroset/render/renderer.hpp"
+
+namespace zeroset::test {
+
+inline std::vector<bool> coverage(const Scene& scene, const RenderSettings& settings) {
+    const RenderResult r = render(scene, settings);
+    std::vector<bool> mask;
+    const Vec3d bg = scene.background;
+    for (const auto& p : r.image.pixels)
+        mask.push_back(!(p.x == static_cast<float>(bg.x) && p.y == static_cast<float>(bg.y) &&
+                         p.z == static_cast<float>(bg.z)));
+    return mask;
+}
+
+}  // namespace zeroset::test
