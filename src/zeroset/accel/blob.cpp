@@ -105,18 +105,32 @@ void Blob::sweep(BlobScratch& s, OnSegment&& on_segment) const {
         for (; i < events.size() && events[i].t == ta; ++i) apply(events[i], s);
         if (i == events.size() || s.active.empty()) continue;
         const double tb = events[i].t;
-        if (blob_field_upper_bound(settings_, s.kernels, s.active, ta, tb) < settings_.threshold) continue;
-        if (!on_segment(ta, tb)) return;
+        if (may_reach_threshold(s, ta, tb) && !on_segment(ta, tb)) return;
     }
+}
+
+bool Blob::may_reach_threshold(const BlobScratch& s, double ta, double tb) const {
+    // The quadratic pieces may pass their kernel a little: they are solved, cheaply, wherever they are.
+    return settings_.metaball_quadratics ||
+           blob_field_upper_bound(settings_, s.kernels, s.active, ta, tb) >= settings_.threshold;
+}
+
+bool Blob::jumps_inside(const BlobScratch& s, double t) const {
+    // Only a cut-off Gaussian jumps where it enters (by less than tolerance·T).
+    if (blob_kernel_info(settings_.kernel).finite_support) return false;
+    return blob_field_at(settings_, s.kernels, s.active, t).value <= 0.0;
+}
+
+BlobSegmentSettings Blob::settings_for(const Ray& ray) const {
+    BlobSegmentSettings s = settings_;
+    s.tangent_width /= length(ray.dir);  // a length in the blob's space, as a span of t
+    return s;
 }
 
 double Blob::value_on_ray(const BlobScratch& s, double t) const {
     double field = 0.0;
-    for (const KernelOnRay& k : s.kernels) {
-        if (t < k.t_in || t > k.t_out) continue;
-        const Vec3d q = k.q0 + t * k.qd;
-        field += k.strength * kernel_at(settings_.kernel, dot(q, q), k.blobbiness).value;
-    }
+    for (const KernelOnRay& k : s.kernels)
+        if (t >= k.t_in && t <= k.t_out) field += k.strength * kernel_value_on_ray(settings_, k, t);
     return settings_.threshold - field;
 }
 
@@ -159,7 +173,7 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
     s.kernels.clear();
     s.events.clear();
     s.active.clear();
-    const BlobSegmentSolver solver(settings_);
+    const BlobSegmentSolver solver(settings_for(ray));
     // The BVH hands over the components front to back, with a frontier
     // before which every component has been seen: the segments before it
     // are complete and are solved at once, so the search stops at the first
@@ -172,7 +186,10 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
         while (!s.events.empty() && s.events.front().t < frontier) {
             const BlobScratch::Event e = s.events.front();
             if (e.t > done) {
-                if (!started) {  // every component at t0 is in: is the ray inside already?
+                // Every component at t0 is in: is the ray inside already? (Not
+                // asked of the quadratic pieces, which are the ray's own: see
+                // BlobSegmentSolver's quadratic roots.)
+                if (!started && !settings_.metaball_quadratics) {
                     started = true;
                     const double start = value_on_ray(s, span->t0);
                     if (start <= 0.0) {
@@ -180,8 +197,11 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
                         return false;
                     }
                 }
-                if (!s.active.empty() &&
-                    blob_field_upper_bound(settings_, s.kernels, s.active, done, e.t) >= settings_.threshold) {
+                if (!s.active.empty() && may_reach_threshold(s, done, e.t)) {
+                    if (jumps_inside(s, done)) {  // a Gaussian entered at its cut-off and took f below 0
+                        hit = done;
+                        return false;
+                    }
                     s.roots.clear();
                     if (solver.roots(s.kernels, s.active, done, e.t, true, s.roots, scratch.counters) == HitStatus::Failed) {
                         failed = true;
@@ -231,9 +251,10 @@ void Blob::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scrat
     BlobScratch& s = scratch_for(scratch);
     gather(ray, span->t0, span->t1, s, scratch);
     if (s.kernels.empty()) return;
-    const BlobSegmentSolver solver(settings_);
+    const BlobSegmentSolver solver(settings_for(ray));
     s.roots.clear();
     sweep(s, [&](double ta, double tb) {
+        if (jumps_inside(s, ta)) s.roots.push_back(ta);  // a boundary without a root of f on either side
         if (solver.roots(s.kernels, s.active, ta, tb, false, s.roots, scratch.counters) == HitStatus::Failed)
             ++scratch.counters.failed_queries;  // the spans are those of the roots found so far
         return true;
@@ -241,7 +262,7 @@ void Blob::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scrat
     std::sort(s.roots.begin(), s.roots.end());
     std::erase_if(s.roots, [&](double t) { return !(t > span->t0 && t < span->t1); });
     // A root on a segment's end may come from both segments.
-    const double merge_width = 4.0 * settings_.tangent_width / length(ray.dir);
+    const double merge_width = 4.0 * settings_for(ray).tangent_width;
     s.roots.erase(std::unique(s.roots.begin(), s.roots.end(), [&](double a, double b) { return b - a <= merge_width; }),
                   s.roots.end());
     spans_from_roots(

@@ -114,7 +114,14 @@ private:
     /// holding them; it returns false to stop.
     template <class OnSegment>
     void sweep(BlobScratch& s, OnSegment&& on_segment) const;
-    /// f at t over every gathered kernel in reach there.
+    /// Whether the field may reach the threshold on [ta, tb] over s.active (false: skip the segment).
+    [[nodiscard]] bool may_reach_threshold(const BlobScratch& s, double ta, double tb) const;
+    /// Whether f ≤ 0 at t over s.active for a cut-off kernel: the components
+    /// entering there took the field past T without a root in between.
+    [[nodiscard]] bool jumps_inside(const BlobScratch& s, double t) const;
+    /// The solver's settings for a ray (its tangent width in t).
+    [[nodiscard]] BlobSegmentSettings settings_for(const Ray& ray) const;
+    /// f at t over every gathered kernel in reach there, as the solver sees it.
     [[nodiscard]] double value_on_ray(const BlobScratch& s, double t) const;
     [[nodiscard]] SurfaceRef surface_at(const Ray& ray, double t, BoundaryKind kind) const;
     /// One component's part of ∇f at p (0 beyond its reach).

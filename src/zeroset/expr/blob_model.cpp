@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -144,14 +145,24 @@ BlobModel::BlobModel(BlobKernel kernel, double threshold, std::vector<BlobCompon
             throw std::invalid_argument(which + "the strength must be a nonzero number");
         if (kernel == BlobKernel::Blinn && !(std::isfinite(c.blobbiness) && c.blobbiness < 0.0))
             throw std::invalid_argument(which + "Blinn's blobbiness must be a negative number");
+        if (kernel == BlobKernel::Blinn && !std::isfinite(std::abs(c.strength) * std::exp(-c.blobbiness)))
+            throw std::invalid_argument(which + "its peak, strength × e^(-blobbiness), overflows a double");
         if (!(std::isfinite(c.center.x) && std::isfinite(c.center.y) && std::isfinite(c.center.z)))
             throw std::invalid_argument(which + "the center must be finite");
         const std::optional<Mat4> inverse = c.shape.inverse();
         if (!c.shape.is_finite() || !inverse || !(c.shape.squareness() > 1e-12))
             throw std::invalid_argument(which + "the shape is singular (it flattens the component)");
         // q = (1/R)·L⁻¹·(p − c)
-        to_kernel_.push_back(Mat4::scale({1.0 / c.radius, 1.0 / c.radius, 1.0 / c.radius}) * *inverse *
-                             Mat4::translate(-c.center));
+        const Mat4 map = Mat4::scale({1.0 / c.radius, 1.0 / c.radius, 1.0 / c.radius}) * *inverse * Mat4::translate(-c.center);
+        const std::optional<Mat4> back = map.inverse();
+        if (!map.is_finite() || !back || !back->is_finite())
+        {
+            char radius[32];
+            std::snprintf(radius, sizeof radius, "%.3g", c.radius);
+            throw std::invalid_argument(which + "its radius and shape map it outside what a double holds (radius " +
+                                        radius + ")");
+        }
+        to_kernel_.push_back(map);
     }
 }
 

@@ -124,7 +124,10 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
     switch (node->kind) {
         case SceneNode::Kind::Object: {
             const Object& o = node->object;
-            const std::string name = node->name.empty() ? "#" + std::to_string(leaves_.size() + 1) : node->name;
+            // An unnamed one is numbered among all the objects prepared so far.
+            const std::string name = node->name.empty()
+                                         ? "#" + std::to_string(leaves_.size() + blobs_.size() + static_cast<std::size_t>(planes_) + 1)
+                                         : node->name;
             label = "object '" + name + "'";
             const Method method = overrides_.method.value_or(o.method);
             if (o.blob && method == Method::Auto) {  // the blob's own exact path

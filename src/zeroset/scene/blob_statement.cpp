@@ -49,6 +49,9 @@ SceneNodePtr SceneParser::blob(const Token& keyword) {
             in_->fail_expected("a key (" + join_words(blob_keys, "or") + "), a transform, let, for or '}'");
     }
     if (reading.components.empty()) in_->fail(keyword.where, "a blob needs at least one component");
+    if (node->object.blob_quadratics && reading.kernel != BlobKernel::Metaball)
+        in_->fail(reading.seen.at("quadratics"),
+                  "quadratics (the survey's approximation by quadratic pieces) is for the metaball kernel only");
     Object& object = node->object;
     try {
         object.blob = std::make_shared<const BlobModel>(reading.kernel, reading.threshold, std::move(reading.components));
@@ -107,10 +110,7 @@ bool SceneParser::blob_entry(BlobReading& reading) {
         if (!(t > 0.0 && t < 1.0)) in_->fail(where, "the tolerance must lie strictly between 0 and 1");
         object.blob_tolerance = t;
     } else if (word == "quadratics") {
-        const bool on = on_off("quadratics");
-        if (on && reading.kernel != BlobKernel::Metaball)
-            in_->fail(entry.where, "quadratics (the survey's approximation by quadratic pieces) is for the metaball kernel only");
-        object.blob_quadratics = on;
+        object.blob_quadratics = on_off("quadratics");  // checked against the kernel at the blob's end
     } else if (word == "component") {
         if (++objects_ > limits_.objects)
             in_->fail(entry.where, "the scene makes more than " + std::to_string(limits_.objects) +

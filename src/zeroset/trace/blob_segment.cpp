@@ -134,11 +134,42 @@ double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<con
         if (k.strength < 0.0) continue;
         const double nearest = std::clamp(-dot(k.q0, k.qd) / dot(k.qd, k.qd), ta, tb);
         const Vec3d q = k.q0 + nearest * k.qd;
-        // u a little low and K a little high: every kernel decreases in u.
-        const double u = std::max(0.0, dot(q, q) * (1.0 - 1e-9) - 1e-300);
-        bound += k.strength * kernel_at(settings.kernel, u, k.blobbiness).value;
+        // |q| a little short by what the mapping and q0 + t·qd may be off
+        // (each coordinate, so √3 of it in length), then K a little high:
+        // every kernel decreases in u.
+        const double error = k.q0_error + std::abs(nearest) * k.qd_error +
+                             4.0 * unit_roundoff * (length(k.q0) + std::abs(nearest) * length(k.qd));
+        const double shortest = std::max(0.0, length(q) * (1.0 - 4.0 * unit_roundoff) - 1.7321 * error);
+        bound += k.strength * kernel_at(settings.kernel, shortest * shortest * (1.0 - 4.0 * unit_roundoff), k.blobbiness).value;
     }
-    return bound * (1.0 + 1e-9);
+    return bound * (1.0 + 1e-12);
+}
+
+MetaballPiece metaball_piece(const KernelOnRay& k, double t) {
+    const MetaballPieces pieces = metaball_pieces(k);
+    int j = 0;
+    while (j + 2 < pieces.count && pieces.ends[static_cast<std::size_t>(j + 1)] <= t) ++j;
+    const double p0 = pieces.ends[static_cast<std::size_t>(j)], p1 = pieces.ends[static_cast<std::size_t>(j + 1)];
+    const auto K = [&](double at) {
+        const Vec3d q = k.q0 + at * k.qd;
+        return kernel_at(BlobKernel::Metaball, dot(q, q), 0.0).value;
+    };
+    // The quadratic through K at the piece's ends and middle (exact where K = 1 − 3u).
+    const double h = 0.5 * (p1 - p0), pm = p0 + h;
+    const double k0 = K(p0), km = K(pm), k1 = K(p1);
+    const double c2 = h > 0.0 ? (k0 - 2.0 * km + k1) / (2.0 * h * h) : 0.0;
+    const double c1 = h > 0.0 ? (k1 - k0) / (2.0 * h) : 0.0;
+    return {pm, km, c1, c2};
+}
+
+double kernel_value_on_ray(const BlobSegmentSettings& settings, const KernelOnRay& k, double t) {
+    if (settings.metaball_quadratics) {
+        const MetaballPiece p = metaball_piece(k, t);
+        const double d = t - p.t_mid;
+        return p.k_mid + p.c1 * d + p.c2 * d * d;
+    }
+    const Vec3d q = k.q0 + t * k.qd;
+    return kernel_at(settings.kernel, dot(q, q), k.blobbiness).value;
 }
 
 int BlobSegmentSolver::polynomial(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active,
@@ -244,31 +275,27 @@ HitStatus BlobSegmentSolver::quadratic_roots(std::span<const KernelOnRay> kernel
     std::array<double, 3> f{settings_.threshold, 0.0, 0.0};
     for (const std::uint32_t i : active) {
         const KernelOnRay& k = kernels[i];
-        const MetaballPieces pieces = metaball_pieces(k);
-        int j = 0;
-        while (j + 2 < pieces.count && pieces.ends[static_cast<std::size_t>(j + 1)] <= t_c) ++j;
-        const double p0 = pieces.ends[static_cast<std::size_t>(j)], p1 = pieces.ends[static_cast<std::size_t>(j + 1)];
-        const auto K = [&](double t) {
-            const Vec3d q = k.q0 + t * k.qd;
-            return kernel_at(BlobKernel::Metaball, dot(q, q), 0.0).value;
-        };
-        // The quadratic through K at the piece's ends and middle (exact where K = 1 − 3u).
-        const double h = 0.5 * (p1 - p0), pm = p0 + h;
-        const double k0 = K(p0), km = K(pm), k1 = K(p1);
-        const double c2 = h > 0.0 ? (k0 - 2.0 * km + k1) / (2.0 * h * h) : 0.0;
-        const double c1 = h > 0.0 ? (k1 - k0) / (2.0 * h) : 0.0;
-        // About pm, then moved to t_c: c0 + c1·(τ + d) + c2·(τ + d)², d = t_c − pm.
-        const double d = t_c - pm;
-        f[0] -= k.strength * (km + c1 * d + c2 * d * d);
-        f[1] -= k.strength * (c1 + 2.0 * c2 * d);
-        f[2] -= k.strength * c2;
+        const MetaballPiece p = metaball_piece(kernels[i], t_c);
+        // About its middle, then moved to t_c: k_mid + c1·(τ + d) + c2·(τ + d)², d = t_c − t_mid.
+        const double d = t_c - p.t_mid;
+        f[0] -= k.strength * (p.k_mid + p.c1 * d + p.c2 * d * d);
+        f[1] -= k.strength * (p.c1 + 2.0 * p.c2 * d);
+        f[2] -= k.strength * p.c2;
         counters.point_evaluations += 3;
     }
     std::array<double, max_closed_form_degree> found{};
     const int count = closed_form_roots_in(f, ta - t_c, tb - t_c, found);
-    if (count == 0) return HitStatus::NoHit;
-    for (int i = 0; i < (first_only ? 1 : count); ++i) roots.push_back(std::clamp(t_c + found[static_cast<std::size_t>(i)], ta, tb));
-    return HitStatus::Ok;
+    const std::size_t before = roots.size();
+    for (int i = 0; i < count; ++i) {
+        const double tau = found[static_cast<std::size_t>(i)];
+        // The pieces are the ray's own: a ray from a point a hair off the
+        // surface (a shadow ray) may start inside by the approximation's
+        // error. Its first hit is the first entry, where f falls through 0.
+        if (first_only && f[1] + 2.0 * f[2] * tau > 0.0) continue;
+        roots.push_back(std::clamp(t_c + tau, ta, tb));
+        if (first_only) break;
+    }
+    return roots.size() > before ? HitStatus::Ok : HitStatus::NoHit;
 }
 
 HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels,
@@ -286,7 +313,8 @@ HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels
     for (long visited = 0; !segments.empty(); ++visited) {
         if (visited == settings_.max_segments || counters.over_limit()) return HitStatus::Failed;
         const Segment s = segments.pop();
-        const Enclosure e = enclose(settings_, kernels, active, t_c, Interval(s.a - t_c, s.b - t_c));
+        const Interval tau(rounding::down(s.a - t_c), rounding::up(s.b - t_c));
+        const Enclosure e = enclose(settings_, kernels, active, t_c, tau);
         ++counters.interval_evaluations;
         if (e.value.is_empty() || !std::isfinite(e.value.lo) || !std::isfinite(e.value.hi)) return HitStatus::Failed;
         if (!e.value.contains(0.0)) continue;  // Fig. 9, step 2: no root here
@@ -300,7 +328,8 @@ HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels
         }
         // A near miss: the mean-value form f(m) + f′(T)·(T − m) excludes 0.
         const double mid = 0.5 * (s.a + s.b);
-        const Interval at_mid = enclose(settings_, kernels, active, t_c, Interval(mid - t_c)).value;
+        const Interval at_mid =
+            enclose(settings_, kernels, active, t_c, Interval(rounding::down(mid - t_c), rounding::up(mid - t_c))).value;
         if (!(at_mid + e.slope * Interval(rounding::down(s.a - mid), rounding::up(s.b - mid))).contains(0.0)) continue;
         if (s.b - s.a > settings_.tangent_width && SegmentStack::above_resolution(s) && segments.can_split(s)) {
             segments.split(s, s.a);  // step 5: front half first

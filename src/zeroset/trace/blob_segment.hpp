@@ -59,7 +59,7 @@ double mapping_error(const Mat4& m, const Vec3d& v, bool point);
 struct BlobSegmentSettings {
     BlobKernel kernel;
     double threshold;
-    /// Segments narrower than this that may still hold a root are a (tangent) hit.
+    /// Segments narrower than this (in t) that may still hold a root are a (tangent) hit.
     double tangent_width;
     /// Interval segments one search may visit before it fails.
     long max_segments;
@@ -77,13 +77,24 @@ struct MetaballPieces {
     int count;                   // of ends (3 or 5)
 };
 MetaballPieces metaball_pieces(const KernelOnRay& k);
+/// The piece holding t, as K ≈ k_mid + c1·(t − t_mid) + c2·(t − t_mid)².
+struct MetaballPiece {
+    double t_mid, k_mid, c1, c2;
+};
+MetaballPiece metaball_piece(const KernelOnRay& k, double t);
 
-/// f and f′ at t over the given components (those out of reach add 0).
+/// One component's K at t as the solver sees it: the kernel, or with
+/// metaball_quadratics its quadratic piece there.
+double kernel_value_on_ray(const BlobSegmentSettings& settings, const KernelOnRay& k, double t);
+
+/// f and f′ at t over the given components (those out of reach add 0), by
+/// the exact kernel.
 ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
                                  std::span<const std::uint32_t> active, double t);
 
 /// An upper bound on Σ sᵢ·K(uᵢ) over [ta, tb] from the positive components'
-/// nearest approach: when it stays below T, the segment holds no root.
+/// nearest approach, with the error of mapping the ray into their spaces:
+/// when it stays below T, the segment holds no root. Exact kernels only.
 double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
                               std::span<const std::uint32_t> active, double ta, double tb);
 
