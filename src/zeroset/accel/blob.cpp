@@ -286,7 +286,7 @@ double Blob::value_at(const Vec3d& p) const {
     components_at(p, [&](const Component& c) {
         const Vec3d q = to_kernel(c).transform_point(p);
         const double u = dot(q, q);
-        if (u <= c.reach) field += c.strength * kernel_at(settings_.kernel, u, c.blobbiness).value;
+        if (u <= c.reach) field += c.strength * kernel_value_at(settings_.kernel, u, c.blobbiness);
     });
     return settings_.threshold - field;
 }

@@ -115,10 +115,20 @@ std::optional<BlobKernel> blob_kernel_named(std::string_view name) {
 }
 
 KernelValue kernel_at(BlobKernel kernel, double u, double blobbiness) {
+    if (kernel == BlobKernel::Blinn) {  // K′ = B·K: one exponential
+        const double v = kernel_value<double>(kernel, u, blobbiness);
+        return {v, blobbiness * v};
+    }
     return {kernel_value<double>(kernel, u, blobbiness), kernel_slope<double>(kernel, u, blobbiness)};
 }
 
+double kernel_value_at(BlobKernel kernel, double u, double blobbiness) {
+    return kernel_value<double>(kernel, u, blobbiness);
+}
+
 Interval kernel_over(BlobKernel kernel, const Interval& u, double blobbiness) {
+    // Blinn's in one interval exponential (two calls of exp, not four).
+    if (kernel == BlobKernel::Blinn) return exp(Interval(blobbiness) * (u - Interval(1.0)));
     // Every kernel decreases in u ≥ 0.
     return {kernel_value<Interval>(kernel, u.hi, blobbiness).lo, kernel_value<Interval>(kernel, u.lo, blobbiness).hi};
 }

@@ -55,6 +55,8 @@ struct KernelValue {
     double slope;
 };
 KernelValue kernel_at(BlobKernel kernel, double u, double blobbiness);
+/// K(u) alone (one exponential for Blinn's, not two).
+double kernel_value_at(BlobKernel kernel, double u, double blobbiness);
 /// An outward-rounded enclosure of K over u ∈ U (U ≥ 0): every kernel
 /// decreases in u, so it is [K(U.hi), K(U.lo)] widened by the evaluations'
 /// rounding.

@@ -140,7 +140,7 @@ double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<con
         const double error = k.q0_error + std::abs(nearest) * k.qd_error +
                              4.0 * unit_roundoff * (length(k.q0) + std::abs(nearest) * length(k.qd));
         const double shortest = std::max(0.0, length(q) * (1.0 - 4.0 * unit_roundoff) - 1.7321 * error);
-        bound += k.strength * kernel_at(settings.kernel, shortest * shortest * (1.0 - 4.0 * unit_roundoff), k.blobbiness).value;
+        bound += k.strength * kernel_value_at(settings.kernel, shortest * shortest * (1.0 - 4.0 * unit_roundoff), k.blobbiness);
     }
     return bound * (1.0 + 1e-12);
 }
@@ -152,7 +152,7 @@ MetaballPiece metaball_piece(const KernelOnRay& k, double t) {
     const double p0 = pieces.ends[static_cast<std::size_t>(j)], p1 = pieces.ends[static_cast<std::size_t>(j + 1)];
     const auto K = [&](double at) {
         const Vec3d q = k.q0 + at * k.qd;
-        return kernel_at(BlobKernel::Metaball, dot(q, q), 0.0).value;
+        return kernel_value_at(BlobKernel::Metaball, dot(q, q), 0.0);
     };
     // The quadratic through K at the piece's ends and middle (exact where K = 1 − 3u).
     const double h = 0.5 * (p1 - p0), pm = p0 + h;
@@ -169,7 +169,7 @@ double kernel_value_on_ray(const BlobSegmentSettings& settings, const KernelOnRa
         return p.k_mid + p.c1 * d + p.c2 * d * d;
     }
     const Vec3d q = k.q0 + t * k.qd;
-    return kernel_at(settings.kernel, dot(q, q), k.blobbiness).value;
+    return kernel_value_at(settings.kernel, dot(q, q), k.blobbiness);
 }
 
 int BlobSegmentSolver::polynomial(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active,
