@@ -65,5 +65,20 @@ TEST(BlobScenes, GeneralMethodsOnTheSameBlobCoverWhatItsOwnPathCovers) {
     }
 }
 
+TEST(BlobScenes, ABlobBuiltInCppRendersAsItsSceneFileDoes) {
+    // docs/blobs.md's example: Figure 8's soft objects without the scene language.
+    std::vector<BlobComponent> parts(2);
+    parts[0].center = {1.2, 0, 0};
+    parts[1].center = {-1.2, 0, 0};
+    for (auto& p : parts) p.radius = 2, p.strength = 2;
+    Object soft;
+    soft.blob = std::make_shared<const BlobModel>(BlobKernel::Soft, 1.0, parts);
+    soft.bounds = Bounds::make_box(*soft.blob->solid_bounds(soft.blob_tolerance));
+    Scene scene = scene_file("blobs/figure8_soft.zs");
+    const std::vector<bool> from_file = coverage(scene, 160, 120);
+    scene.nodes = {make_object_node(soft, "soft")};
+    EXPECT_EQ(coverage(scene, 160, 120), from_file);
+}
+
 }  // namespace
 }  // namespace zeroset
