@@ -98,7 +98,9 @@ TEST(BlobScenes, BadBlobsGetClearErrors) {
               "partition or material), a transform, let, for or '}' but found 'surface'");
     EXPECT_EQ(error_of("blob { quadratics on component { } }"),
               "scene.zs:1:8: quadratics (the survey's approximation by quadratic pieces) is for the metaball kernel only");
-    EXPECT_EQ(error_of("blob { quadratics on kernel metaball component { } }"), "");  // any order before the components
+    EXPECT_EQ(error_of("blob { quadratics on kernel metaball component { } }"), "");
+    EXPECT_EQ(error_of("blob { component { center (1e308, 0, 0)  radius 1e308 } component { center (-1e308, 0, 0) } }"),
+              "scene.zs:1:1: the blob's reach is wider than a double can measure");  // any order before the components
     EXPECT_EQ(error_of("blob { component { radius 1e-310 } }"),
               "scene.zs:1:1: blob: component 1: its radius and shape map it outside what a double holds (radius 1e-310)");
 }

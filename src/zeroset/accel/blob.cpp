@@ -29,6 +29,8 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
     if (!solid)
         throw std::invalid_argument("a blob needs a component of positive strength (its field never reaches the threshold)");
     bounds_ = *solid;
+    if (!std::isfinite(bounds_.diagonal()))
+        throw std::invalid_argument("the blob's reach is wider than a double can measure");
     std::vector<Box3> boxes;
     for (std::size_t i = 0; i < m.components().size(); ++i) {
         const BlobComponent& c = m.components()[i];
@@ -37,6 +39,8 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
         const bool sphere = c.shape == Mat4::identity();
         components_.push_back({static_cast<std::uint32_t>(i), sphere, reach, c.strength, c.blobbiness, c.center, 1.0 / c.radius});
         boxes.push_back(m.reach_box(i, reach));
+        if (!is_bounded(boxes.back()) || !std::isfinite(boxes.back().diagonal()))
+            throw std::invalid_argument("component " + std::to_string(i + 1) + ": its reach is wider than a double can measure");
         stats_.reach_radius = std::max(stats_.reach_radius, std::sqrt(reach));
     }
     bvh_ = std::make_unique<Bvh>(boxes, description_.threads);

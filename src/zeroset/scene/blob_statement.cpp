@@ -4,6 +4,7 @@
 // model.
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "zeroset/scene/scene_error.hpp"
 #include "zeroset/scene/scene_parser.hpp"
@@ -60,6 +61,7 @@ SceneNodePtr SceneParser::blob(const Token& keyword) {
     }
     const std::optional<Box3> reach = object.blob->solid_bounds(object.blob_tolerance);
     if (!reach) in_->fail(keyword.where, "a blob needs a component of positive strength (its field never reaches the threshold)");
+    if (!std::isfinite(reach->diagonal())) in_->fail(keyword.where, "the blob's reach is wider than a double can measure");
     object.bounds = Bounds::make_box(*reach);
     return node;
 }
