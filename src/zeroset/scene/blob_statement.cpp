@@ -14,14 +14,9 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 5> transform_keys{"translate", "rotate", "scale", "shear", "matrix"};
 constexpr std::array<std::string_view, 9> blob_keys{"kernel",  "threshold", "tolerance", "quadratics", "component",
                                                     "method",  "normals",   "partition", "material"};
 constexpr std::array<std::string_view, 4> component_keys{"center", "radius", "strength", "blobbiness"};
-
-bool is_one_of(std::span<const std::string_view> names, std::string_view word) {
-    return std::ranges::find(names, word) != names.end();
-}
 
 }  // namespace
 
@@ -83,12 +78,12 @@ bool SceneParser::blob_entry(BlobReading& reading) {
         });
         return true;
     }
-    if (is_one_of(transform_keys, word)) {
+    if (is_one_of(transform_keys, entry)) {
         in_->next();
         add_transform(entry, reading.node);
         return true;
     }
-    if (!is_one_of(blob_keys, word)) return false;
+    if (!is_one_of(blob_keys, entry)) return false;
     if (word != "component") {
         if (const auto first = reading.seen.find(word); first != reading.seen.end())
             in_->fail(entry.where, "'" + std::string(word) + "' is already set in this blob block (at " +
@@ -138,7 +133,7 @@ BlobComponent SceneParser::blob_component(const Token& keyword, BlobKernel kerne
     block(
         keyword, keys,
         [&](const Token& key) {
-            if (is_one_of(transform_keys, key.text)) {
+            if (is_one_of(transform_keys, key)) {
                 add_transform(key, shape);
             } else if (key.text == "center") {
                 c.center = vector("the center").value;

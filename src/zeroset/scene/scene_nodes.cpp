@@ -18,7 +18,6 @@ namespace {
 
 constexpr std::array<std::string_view, 7> object_keys{"surface", "bounds", "method", "solver", "normals", "partition",
                                                       "material"};
-constexpr std::array<std::string_view, 5> transform_keys{"translate", "rotate", "scale", "shear", "matrix"};
 constexpr std::array<std::string_view, 7> node_keywords{"object",     "group",    "union", "intersection",
                                                         "difference", "instance", "blob"};
 
@@ -42,10 +41,6 @@ bool vanishes_throughout(const Expr& f, const Bounds& bounds) {
         if (eval(p.x, p.y, p.z) != 0.0) return false;
     }
     return true;
-}
-
-bool is_one_of(std::span<const std::string_view> names, const Token& token) {
-    return token.kind == TokenKind::Name && std::ranges::find(names, token.text) != names.end();
 }
 
 /// A SceneError with a note on where it was reached from appended.

@@ -8,6 +8,8 @@
 // (affine maps).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -27,6 +29,14 @@
 #include "zeroset/scene/token_stream.hpp"
 
 namespace zeroset {
+
+/// The keys that apply an affine map, in every block that takes transforms.
+inline constexpr std::array<std::string_view, 5> transform_keys{"translate", "rotate", "scale", "shear", "matrix"};
+
+/// True when the token is a name among `names`.
+inline bool is_one_of(std::span<const std::string_view> names, const Token& token) {
+    return token.kind == TokenKind::Name && std::ranges::find(names, token.text) != names.end();
+}
 
 /// `shape NAME(PARAMETERS) { … }`: a body to read once per distinct list of
 /// arguments, each reading placed by `instance` as often as wanted.
