@@ -8,6 +8,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkgconf       # toolchain
   libpng-dev                          # PNG output
+  libopenexr-dev openexr              # EXR output; exrheader reads it back in the tests
   libhwy-dev                          # SIMD with run-time dispatch (Highway)
   libgtest-dev libgmock-dev           # tests
   libmpfi-dev libmpfr-dev libgmp-dev  # high-precision oracles for the tests

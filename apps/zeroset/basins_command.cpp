@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "image_output.hpp"
 #include "options.hpp"
 #include "ray_options.hpp"
 #include "zeroset/io/image_writer.hpp"
@@ -20,7 +21,8 @@ namespace zeroset::cli {
 
 namespace {
 
-constexpr const char* basins_usage = R"(Usage: zeroset basins [SCENE] [options]
+std::string basins_usage() {
+    return R"(Usage: zeroset basins [SCENE] [options]
 
 Draws the survey's Figure 5: for every start value t0 in a rectangle of the
 complex plane, where Newton's method t <- t - H(t)/H'(t) goes, H(t) being the
@@ -44,25 +46,23 @@ Options:
   --height H          image height in pixels (default: 270)
   --iterations N      Newton steps before giving up (default: 100)
   --threads N         threads (default: all cores)
-  -o, --output FILE   the image to write (.png, .ppm or .pfm; default: basins.png)
-  -h, --help          this text
+)" + image_output_help("basins.png") + R"(  -h, --help          this text
 )";
+}
 
 }  // namespace
 
 int basins_command(const std::vector<std::string>& args) {
     const Options options(args,
-                          {"-o", "--output", "--object", "--origin", "--dir", "--re", "--im", "--width", "--height",
+                          {"-o", "--output", "--format", "--object", "--origin", "--dir", "--re", "--im", "--width", "--height",
                            "--iterations", "--threads"},
                           {"-h", "--help"});
     if (options.has("-h") || options.has("--help")) {
-        std::fputs(basins_usage, stdout);
+        std::fputs(basins_usage().c_str(), stdout);
         return 0;
     }
     if (options.positional().size() > 1) throw UsageError("basins takes at most one scene file");
-    if (options.value("-o") && options.value("--output")) throw UsageError("give -o or --output, not both");
-    const std::filesystem::path output = options.value("-o").value_or(options.value("--output").value_or("basins.png"));
-    if (const auto problem = image_format_problem(output)) throw UsageError(output.string() + ": " + *problem);
+    const ImageOutput output(options, "basins.png");
 
     BasinSettings settings;
     if (const auto re = range_option(options, "--re")) std::tie(settings.region.re_min, settings.region.re_max) = *re;
@@ -77,7 +77,7 @@ int basins_command(const std::vector<std::string>& args) {
     const Scene scene = options.positional().empty() ? default_scene() : load_scene(options.positional()[0]);
     const PlacedObject object = find_object(scene, options.value("--object"));
     const BasinMap map = newton_basins(Tape(surface_of(object.object())), to_object_space(object, ray), settings);
-    write_image(map.image, output);
+    output.write(map.image);
 
     std::string roots;
     for (const double t : map.real_roots) {
@@ -86,7 +86,7 @@ int basins_command(const std::vector<std::string>& args) {
         roots += text;
     }
     std::fprintf(stderr, "zeroset: real roots along the ray: %s\n", roots.empty() ? "none" : roots.c_str());
-    std::fprintf(stderr, "zeroset: wrote %s (%dx%d)\n", output.string().c_str(), settings.width, settings.height);
+    std::fprintf(stderr, "zeroset: wrote %s (%dx%d)\n", output.name().c_str(), settings.width, settings.height);
     return 0;
 }
 

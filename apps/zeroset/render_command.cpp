@@ -1,13 +1,14 @@
 // `zeroset render`: load a scene (or the built-in default), render it and
-// write the image. Everything that can be checked before rendering — options,
-// the scene, the output format — is checked first, and the image is written
-// atomically, so a failure never leaves a partial file.
+// write the image. Everything that can be checked before rendering —
+// options, the output's format and place, the scene — is checked first, and
+// the image is written atomically, so a failure never leaves a partial file.
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <string>
 
 #include "commands.hpp"
+#include "image_output.hpp"
 #include "options.hpp"
 #include "progress_bar.hpp"
 #include "zeroset/io/image_writer.hpp"
@@ -18,7 +19,8 @@ namespace zeroset::cli {
 
 namespace {
 
-constexpr const char* render_usage = R"(Usage: zeroset render [SCENE] [options]
+std::string render_usage() {
+    return R"(Usage: zeroset render [SCENE] [options]
 
 Renders SCENE (a .zs file) to an image. Without SCENE, renders the built-in
 default scene: the survey's Figure 1, two unit spheres at (±1.2, 0, 0)
@@ -26,11 +28,7 @@ blended as Blinn's blobs, h = 1 − e^(−f) − e^(−g) (eq. 12), over a floor
 (the text of scenes/hart1993/blinn_blobs.zs).
 
 Options:
-  -o, --output FILE   the image to write; the format follows the extension:
-                      .png (8-bit sRGB), .ppm (8-bit sRGB), .pfm (linear float).
-                      Default: the scene file's name with .png, in the current
-                      directory (zeroset.png for the built-in scene).
-  --width W           image width in pixels (default: the scene's, else 640)
+)" + image_output_help("the scene file's name with .png, in the current\n                      directory (zeroset.png for the built-in scene)") + R"(  --width W           image width in pixels (default: the scene's, else 640)
   --height H          image height in pixels (default: the scene's, else 480)
   --spp N             samples per pixel, stratified (default: the scene's, else 1)
   --threads N         render threads (default: all cores)
@@ -59,25 +57,24 @@ Options:
 A progress bar is drawn on stderr when it is a terminal; a one-line summary
 (size, time, rays, hits, function evaluations) is printed at the end.
 )";
+}
 
 }  // namespace
 
 int render_command(const std::vector<std::string>& args) {
-    const Options options(args, {"-o", "--output", "--width", "--height", "--spp", "--threads", "--method",
-                                 "--solver", "--normals", "--partition", "--max-evaluations"},
-                          {"-h", "--help", "-q", "--quiet"});
+    std::vector<std::string> valued = {"--width",  "--height",    "--spp",       "--threads",
+                                       "--method", "--solver",    "--normals",   "--partition", "--max-evaluations"};
+    valued.insert(valued.end(), image_output_options.begin(), image_output_options.end());
+    const Options options(args, valued, {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
-        std::fputs(render_usage, stdout);
+        std::fputs(render_usage().c_str(), stdout);
         return 0;
     }
     if (options.positional().size() > 1) throw UsageError("render takes at most one scene file");
-    if (options.value("-o") && options.value("--output")) throw UsageError("give -o or --output, not both");
 
     const std::optional<std::filesystem::path> scene_file =
         options.positional().empty() ? std::nullopt : std::optional(std::filesystem::path(options.positional()[0]));
-    std::filesystem::path output = options.value("-o").value_or(options.value("--output").value_or(""));
-    if (output.empty()) output = scene_file ? scene_file->stem().string() + ".png" : "zeroset.png";
-    if (const auto problem = image_format_problem(output)) throw UsageError(output.string() + ": " + *problem);
+    const ImageOutput output(options, scene_file ? scene_file->stem().string() + ".png" : "zeroset.png");
 
     const Scene scene = scene_file ? load_scene(*scene_file) : default_scene();
 
@@ -86,6 +83,7 @@ int render_command(const std::vector<std::string>& args) {
     settings.height = options.integer("--height").value_or(scene.image.height);
     settings.samples_per_pixel = options.integer("--spp").value_or(scene.image.samples_per_pixel);
     settings.threads = options.integer("--threads").value_or(0);
+    settings.layers = output.format() == ImageFormat::Exr;
     if (const auto name = options.value("--method")) {
         settings.method = method_from_name(*name);
         if (!settings.method) throw UsageError("unknown method '" + *name + "' (try zeroset render --help)");
@@ -120,8 +118,8 @@ int render_command(const std::vector<std::string>& args) {
         }
     }();
     bar.finish();
-    write_image(result.image, output);
-    if (!quiet) std::fprintf(stderr, "zeroset: wrote %s — %s\n", output.string().c_str(), summary_line(result.stats).c_str());
+    output.write(result.image);
+    if (!quiet) std::fprintf(stderr, "zeroset: wrote %s — %s\n", output.name().c_str(), summary_line(result.stats).c_str());
     return 0;
 }
 

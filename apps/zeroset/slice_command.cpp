@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "image_output.hpp"
 #include "options.hpp"
 #include "ray_options.hpp"
 #include "zeroset/expr/batch_lanes.hpp"
@@ -25,7 +26,8 @@ namespace zeroset::cli {
 
 namespace {
 
-constexpr const char* slice_usage = R"(Usage: zeroset slice INPUT [options]
+std::string slice_usage() {
+    return R"(Usage: zeroset slice INPUT [options]
 
 Draws f on a plane: a square of the plane normal to an axis, sampled at
 the pixel centres. INPUT is a .vm model (fidget's format) or a scene file
@@ -48,10 +50,10 @@ Options:
   --shading S         sign or value (default: sign)
   --object NAME       the scene object to slice (default: the first)
   --threads N         threads (default: all cores)
-  -o, --output FILE   the image to write (.png, .ppm or .pfm; default: slice.png)
-  -q, --quiet         no summary line
+)" + image_output_help("slice.png") + R"(  -q, --quiet         no summary line
   -h, --help          this text
 )";
+}
 
 int axis_from_name(const std::string& name) {
     if (name == "x") return 0;
@@ -104,17 +106,15 @@ SlicePlane plane_from(const Options& options, const std::optional<Box3>& bounds)
 }  // namespace
 
 int slice_command(const std::vector<std::string>& args) {
-    const Options options(args, {"-o", "--output", "--size", "--axis", "--at", "--region", "--shading", "--object",
+    const Options options(args, {"-o", "--output", "--format", "--size", "--axis", "--at", "--region", "--shading", "--object",
                                  "--threads"},
                           {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
-        std::fputs(slice_usage, stdout);
+        std::fputs(slice_usage().c_str(), stdout);
         return 0;
     }
     if (options.positional().size() != 1) throw UsageError("slice takes one .vm model or scene file");
-    if (options.value("-o") && options.value("--output")) throw UsageError("give -o or --output, not both");
-    const std::filesystem::path output = options.value("-o").value_or(options.value("--output").value_or("slice.png"));
-    if (const auto problem = image_format_problem(output)) throw UsageError(output.string() + ": " + *problem);
+    const ImageOutput output(options, "slice.png");
     SliceShading shading = SliceShading::Sign;
     if (const auto name = options.value("--shading")) {
         if (*name == "value") shading = SliceShading::Value;
@@ -133,7 +133,7 @@ int slice_command(const std::vector<std::string>& args) {
     const SliceField field = slice(tape, settings);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double band = (settings.plane.max - settings.plane.min) / 16.0;
-    write_image(slice_image(field, shading, band), output);
+    output.write(slice_image(field, shading, band));
 
     if (!options.has("-q") && !options.has("--quiet")) {
         const SliceStats& s = field.stats;
@@ -142,7 +142,7 @@ int slice_command(const std::vector<std::string>& args) {
                      "zeroset: wrote %s (%dx%d) in %.1f ms — %llu tiles by interval, %.1f%% of pixels decided there; "
                      "%llu leaf batches of %.1f clauses on average (full tape %zu clauses, %u slots; leaves at most %u "
                      "slots; %s lanes)\n",
-                     output.string().c_str(), field.size, field.size, seconds * 1e3,
+                     output.name().c_str(), field.size, field.size, seconds * 1e3,
                      static_cast<unsigned long long>(s.tiles), 100.0 * static_cast<double>(s.pixels_decided) / pixels,
                      static_cast<unsigned long long>(s.leaf_batches),
                      s.leaf_batches ? static_cast<double>(s.leaf_clauses) / static_cast<double>(s.leaf_batches) : 0.0,

@@ -72,6 +72,52 @@ TEST_F(Cli, WritesPpmAndPfmByExtension) {
     EXPECT_EQ(magic, "P6");
 }
 
+TEST_F(Cli, WritesExrWithDepthAndNormalsThatExrheaderReads) {
+    ASSERT_EQ(run("render -q -o out.exr --width 32 --height 24").status, 0);
+    const zeroset::Image image = zeroset::read_exr(dir_ / "out.exr");
+    EXPECT_EQ(image.width, 32);
+    ASSERT_TRUE(image.has_layers());
+    // OpenEXR's own tool, as an independent reader (Debian's openexr package).
+    if (std::system("command -v exrheader > /dev/null 2>&1") != 0) GTEST_SKIP() << "exrheader is not installed";
+    const Outcome header = run_shell("exrheader out.exr");
+    ASSERT_EQ(header.status, 0) << header.err;
+    for (const char* channel : {"R,", "G,", "B,", "Z,", "N.x,", "N.y,", "N.z,"})
+        EXPECT_NE(header.out.find(std::string("    ") + channel), std::string::npos) << channel << "\n" << header.out;
+    EXPECT_NE(header.out.find("(0 0) - (31 23)"), std::string::npos) << header.out;
+}
+
+TEST_F(Cli, WritesToStandardOutputInTheNamedFormat) {
+    const Outcome png = run_shell("'" ZEROSET_BINARY "' render -q -o - --width 16 --height 12 | od -An -c -N4");
+    ASSERT_EQ(png.status, 0) << png.err;
+    EXPECT_NE(png.out.find("P   N   G"), std::string::npos) << png.out;
+    const Outcome ppm = run_shell("'" ZEROSET_BINARY "' slice '" ZEROSET_SOURCE_DIR
+                                  "/scenes/hart1993/blinn_blobs.zs' -q --size 8 -o - --format ppm | head -c 2");
+    ASSERT_EQ(ppm.status, 0) << ppm.err;
+    EXPECT_EQ(ppm.out, "P6");
+    EXPECT_EQ(file_count(), 0u);
+    const Outcome bad = run("render -o - --format jpg");
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.err.find("jpg"), std::string::npos) << bad.err;
+    const Outcome mismatch = run("render -o out.png --format exr");
+    EXPECT_EQ(mismatch.status, 2);
+    EXPECT_NE(mismatch.err.find("--format"), std::string::npos) << mismatch.err;
+}
+
+TEST_F(Cli, AnUnwritableOutputIsReportedBeforeRendering) {
+    // A scene far too costly to render in a test: the error must come first.
+    write("slow.zs", "image { width 4000 height 4000 spp 64 }\n"
+                     "object \"a\" { surface x^2 + y^2 + z^2 - 1 bounds box((-1,-1,-1),(1,1,1)) }\n");
+    for (const char* output : {"no/such/dir/out.png", "."}) {
+        const Outcome r = run(std::string("render slow.zs -o ") + output);
+        EXPECT_NE(r.status, 0) << output;
+        EXPECT_EQ(r.err.find("wrote"), std::string::npos) << r.err;
+    }
+    fs::create_directory(dir_ / "taken.png");
+    const Outcome taken = run("render slow.zs -o taken.png");
+    EXPECT_EQ(taken.status, 1);
+    EXPECT_NE(taken.err.find("taken.png: is a directory"), std::string::npos) << taken.err;
+}
+
 TEST_F(Cli, SyntaxErrorNamesFileLineColumnAndWritesNothing) {
     write("bad.zs", "camera { from (0, 0, -5) }\nobject { surface x^2 + * y }\n");
     const std::size_t before = file_count();

@@ -57,14 +57,14 @@ TEST(ImageFormat, ByExtensionIgnoringCase) {
 
 TEST(ImageFormat, ProblemExplainsTheChoice) {
     EXPECT_EQ(image_format_problem("out.png"), std::nullopt);
-    EXPECT_EQ(image_format_problem("out.jpg"), "unsupported image format '.jpg' (use .png, .ppm or .pfm)");
-    EXPECT_EQ(image_format_problem("out"), "no file extension to choose the image format (use .png, .ppm or .pfm)");
+    EXPECT_EQ(image_format_problem("out.jpg"), "unsupported image format '.jpg' (use .png, .ppm, .pfm or .exr)");
+    EXPECT_EQ(image_format_problem("out"), "no file extension to choose the image format (use .png, .ppm, .pfm or .exr)");
 }
 
 TEST(WriteImage, UnsupportedExtensionThrowsAndCreatesNothing) {
     const test::TempDir dir;
     const std::string message = write_error(grey_image(2, 2, 0.5f), dir / "out.jpg");
-    EXPECT_EQ(message, (dir / "out.jpg").string() + ": unsupported image format '.jpg' (use .png, .ppm or .pfm)");
+    EXPECT_EQ(message, (dir / "out.jpg").string() + ": unsupported image format '.jpg' (use .png, .ppm, .pfm or .exr)");
     EXPECT_EQ(dir.entries(), Names{});
 }
 

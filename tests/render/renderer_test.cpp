@@ -96,6 +96,43 @@ TEST(Renderer, ImageDoesNotDependOnThreadCount) {
     EXPECT_EQ(two.stats.threads, 2);
 }
 
+TEST(Renderer, DepthAndNormalLayersDescribeTheNearestHit) {
+    Scene scene;
+    scene.camera.from = {0, 0, -5};
+    scene.camera.fov_degrees = 40;
+    Object o;
+    o.surface = sphere({0, 0, 0}, 1);
+    o.bounds = Bounds::make_box({{-1.5, -1.5, -1.5}, {1.5, 1.5, 1.5}});
+    scene.nodes.push_back(make_object_node(o, "ball", Material{}));
+    RenderSettings settings = small();
+    EXPECT_FALSE(render(scene, settings).image.has_layers());  // only on request
+
+    settings.width = settings.height = 33;  // odd: the middle pixel's centre is on the axis
+    settings.layers = true;
+    const Image image = render(scene, settings).image;
+    ASSERT_TRUE(image.has_layers());
+    const std::size_t middle = 16 * 33 + 16;
+    EXPECT_NEAR(image.depth[middle], 4.0f, 1e-5f);  // the eye is 5 from the centre, the radius is 1
+    EXPECT_NEAR(image.normals[middle].z, -1.0f, 1e-5f);
+    int hits = 0;
+    for (std::size_t i = 0; i < image.depth.size(); ++i) {
+        const bool hit = !is_background(image, static_cast<int>(i % 33), static_cast<int>(i / 33), scene.background);
+        ASSERT_EQ(std::isfinite(image.depth[i]), hit) << i;
+        const Vec3f n = image.normals[i];
+        const float n2 = n.x * n.x + n.y * n.y + n.z * n.z;
+        if (!hit) {
+            ASSERT_EQ(n2, 0.0f) << i;
+            continue;
+        }
+        ++hits;
+        ASSERT_NEAR(n2, 1.0f, 1e-5f) << i;
+        ASSERT_LT(n.z, 0.0f) << i;                                  // facing the eye
+        ASSERT_GE(image.depth[i], 4.0f - 1e-5f) << i;               // nothing nearer than the front pole
+        ASSERT_LE(image.depth[i], std::sqrt(24.0f) + 1e-4f) << i;   // nor farther than the silhouette
+    }
+    EXPECT_GT(hits, 100);
+}
+
 TEST(Renderer, SupersamplingSoftensEdges) {
     const Scene scene = blinn_scene();
     const RenderResult r = render(scene, small(2, 16));

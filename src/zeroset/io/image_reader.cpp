@@ -1,4 +1,4 @@
-// read_png / read_pfm: slurp the file, decode in memory, and put the path in
+// read_png / read_pfm / read_exr: slurp the file, decode in memory, and put the path in
 // every error message.
 #include "zeroset/io/image_reader.hpp"
 
@@ -9,6 +9,7 @@
 #include <system_error>
 #include <vector>
 
+#include "zeroset/io/exr.hpp"
 #include "zeroset/io/pfm.hpp"
 #include "zeroset/io/png.hpp"
 
@@ -55,6 +56,10 @@ Image read_png(const std::filesystem::path& path) {
 
 Image read_pfm(const std::filesystem::path& path) {
     return read_with(path, [](const std::vector<std::uint8_t>& bytes) { return decode_pfm(bytes); });
+}
+
+Image read_exr(const std::filesystem::path& path) {
+    return read_with(path, [](const std::vector<std::uint8_t>& bytes) { return decode_exr(bytes); });
 }
 
 }  // namespace zeroset

@@ -1,5 +1,5 @@
 // Reading images back, for golden-image and round-trip tests: PNG decoded to
-// linear light (inverse sRGB), PFM as stored.
+// linear light (inverse sRGB), PFM and EXR as stored.
 #pragma once
 
 #include <filesystem>
@@ -22,5 +22,8 @@ Image read_png(const std::filesystem::path& path);
 
 /// A colour or greyscale PFM → RGB floats, row 0 at the top. Throws ImageReadError.
 Image read_pfm(const std::filesystem::path& path);
+
+/// An EXR's RGB, and its Z and N.xyz layers when present. Throws ImageReadError.
+Image read_exr(const std::filesystem::path& path);
 
 }  // namespace zeroset

@@ -1,6 +1,7 @@
 // The one check every encoder makes before touching pixels: a positive size
-// and exactly width·height pixels. A malformed Image must give a clear error,
-// never an out-of-bounds read or an empty file.
+// and exactly width·height pixels (and layer entries, when there are
+// layers). A malformed Image must give a clear error, never an out-of-bounds
+// read or an empty file.
 #pragma once
 
 #include <cstddef>
@@ -21,6 +22,11 @@ inline void require_valid_image(const Image& image) {
         throw std::invalid_argument("image has " + std::to_string(image.pixels.size()) + " pixels, expected " +
                                     std::to_string(image.width) + "x" + std::to_string(image.height) + " = " +
                                     std::to_string(expected));
+    if (!image.depth.empty() || !image.normals.empty())
+        if (image.depth.size() != expected || image.normals.size() != expected)
+            throw std::invalid_argument("image layers have " + std::to_string(image.depth.size()) + " depths and " +
+                                        std::to_string(image.normals.size()) + " normals, expected " +
+                                        std::to_string(expected) + " of each");
 }
 
 }  // namespace zeroset

@@ -17,6 +17,8 @@ struct RenderSettings {
     int height = 480;
     int samples_per_pixel = 1;
     int threads = 0;  // 0: all hardware threads
+    /// Also fill the image's depth and normal layers (render/image.hpp).
+    bool layers = false;
     /// When given, every object is intersected with this method instead of its own.
     std::optional<Method> method;
     /// When given, the `polynomial` method's solver for every object.

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -76,19 +77,34 @@ struct StopSignal {
     }
 };
 
+/// What a pixel's samples saw nearest: for the image's depth and normal layers.
+struct NearestSample {
+    float depth = std::numeric_limits<float>::infinity();
+    Vec3f normal{0, 0, 0};
+
+    void offer(const SurfaceHit& hit) {
+        if (!(hit.t < depth)) return;
+        depth = static_cast<float>(hit.t);
+        normal = {static_cast<float>(hit.normal.x), static_cast<float>(hit.normal.y), static_cast<float>(hit.normal.z)};
+    }
+};
+
 void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera, int spp, SceneTracer& tracer,
                  Image& image, ThreadTotals& totals, StopSignal& signal) {
     constexpr double far = std::numeric_limits<double>::infinity();
+    const bool layers = image.has_layers();
     for (int py = tile.y0; py < tile.y1; ++py) {
         for (int px = tile.x0; px < tile.x1; ++px) {
             if (signal.stop.load(std::memory_order_relaxed)) return;
             Vec3d sum{};
+            NearestSample nearest;
             for (int s = 0; s < spp; ++s) {
                 const SubPixel sub = pixel_sample(px, py, s, spp);
                 const Ray ray = camera.ray(px, py, sub.x, sub.y);
                 ++totals.stats.camera_rays;
                 if (const auto hit = tracer.closest_hit(ray, far)) {
                     ++totals.stats.hits;
+                    nearest.offer(*hit);
                     sum += shade(tracer, ray, *hit, totals.shading);
                 } else {
                     sum += scene.background;
@@ -100,6 +116,12 @@ void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera,
                 !totals.non_finite_pixel)
                 totals.non_finite_pixel = {px, py};
             image.at(px, py) = pixel;
+            if (layers) {
+                const std::size_t i = static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width) +
+                                      static_cast<std::size_t>(px);
+                image.depth[i] = nearest.depth;
+                image.normals[i] = nearest.normal;
+            }
             signal.report(tracer, totals);
         }
     }
@@ -173,6 +195,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
                                  : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
     RenderResult result{Image(settings.width, settings.height), {}};
+    if (settings.layers) result.image.add_layers();
     std::vector<ThreadTotals> totals(static_cast<std::size_t>(thread_count));
     std::atomic<std::size_t> next_tile{0};
     std::mutex progress_mutex;

@@ -1,5 +1,5 @@
-// The renderer: camera rays → nearest hit → shading → image, in tiles spread
-// over all cores. Each thread owns its tracer, so tiles share nothing mutable.
+// The renderer: camera rays → nearest hit → shading → image (with depth and
+// normal layers on request), in tiles spread over all cores. Each thread owns its tracer, so tiles share nothing mutable.
 #pragma once
 
 #include "zeroset/render/image.hpp"

@@ -1,0 +1,51 @@
+// ImageOutput: -o/--output and --format read and checked in one place for
+// render, slice and basins.
+#include "image_output.hpp"
+
+#include <unistd.h>
+
+namespace zeroset::cli {
+
+std::string image_output_help(const std::string& default_name) {
+    return "  -o, --output FILE   the image to write; the format follows the extension:\n"
+           "                      .png (8-bit sRGB), .ppm (8-bit sRGB), .pfm (linear\n"
+           "                      float) or .exr (linear float; renders add depth Z and\n"
+           "                      normals N.x, N.y, N.z). '-' writes to standard output.\n"
+           "                      Default: " +
+           default_name +
+           "\n"
+           "  --format F          png, ppm, pfm or exr: the format for '-o -' (default png)\n";
+}
+
+ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& default_name) {
+    if (options.value("-o") && options.value("--output")) throw UsageError("give -o or --output, not both");
+    const std::string given = options.value("-o").value_or(options.value("--output").value_or(""));
+    std::optional<ImageFormat> named;
+    if (const auto name = options.value("--format")) {
+        named = image_format_from_name(*name);
+        if (!named) throw UsageError("unknown image format '" + *name + "' (give png, ppm, pfm or exr)");
+    }
+    if (given == "-") {
+        format_ = named.value_or(ImageFormat::Png);
+        if (::isatty(STDOUT_FILENO)) throw UsageError("standard output is a terminal; redirect it to a file or a pipe");
+        return;
+    }
+    path_ = given.empty() ? default_name : std::filesystem::path(given);
+    if (const auto problem = image_format_problem(path_)) throw UsageError(path_.string() + ": " + *problem);
+    format_ = *image_format_for(path_);
+    if (named && *named != format_)
+        throw UsageError("--format does not match the extension of " + path_.string() +
+                         " (--format is for '-o -'; the extension names a file's format)");
+    check_image_output(path_);
+}
+
+std::string ImageOutput::name() const { return path_.empty() ? "<stdout>" : path_.string(); }
+
+void ImageOutput::write(const Image& image) const {
+    if (path_.empty())
+        write_image_to_stdout(image, format_);
+    else
+        write_image(image, path_);
+}
+
+}  // namespace zeroset::cli

@@ -1,0 +1,39 @@
+// Where a command's image goes: a file named by -o/--output, whose format
+// follows its extension, or standard output (`-o -`, PNG unless --format
+// says otherwise). Everything that can be checked — the format, the place
+// to write — is checked when the command starts, before any rendering.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "options.hpp"
+#include "zeroset/io/image_writer.hpp"
+
+namespace zeroset::cli {
+
+/// The options every image-writing command takes, for its Options list.
+inline const std::vector<std::string> image_output_options = {"-o", "--output", "--format"};
+
+/// The help text's lines for those options, with the command's default file.
+std::string image_output_help(const std::string& default_name);
+
+class ImageOutput {
+public:
+    /// Reads -o/--output and --format; `default_name` when -o is absent.
+    /// Throws UsageError for a bad name or format, ImageWriteError when the
+    /// file could not be written.
+    ImageOutput(const Options& options, const std::filesystem::path& default_name);
+
+    [[nodiscard]] ImageFormat format() const { return format_; }
+    /// The file name, or "<stdout>".
+    [[nodiscard]] std::string name() const;
+    void write(const Image& image) const;
+
+private:
+    std::filesystem::path path_;  // empty for standard output
+    ImageFormat format_;
+};
+
+}  // namespace zeroset::cli
