@@ -14,7 +14,7 @@
 #include "ray_list.hpp"
 #include "ray_options.hpp"
 #include "ray_plot.hpp"
-#include "ray_report.hpp"
+#include "zeroset/render/ray_report.hpp"
 #include "zeroset/scene/load_scene.hpp"
 
 namespace zeroset::cli {
@@ -110,13 +110,9 @@ int ray_command(const std::vector<std::string>& args) {
 
     const Scene scene = default_scene_used ? default_scene() : load_scene(options.positional()[0]);
     const PlacedObject placed = find_object(scene, options.value("--object"));
-    const Object& object = placed.object();
     const RaySubject subject{default_scene_used ? "<default>" : options.positional()[0], placed.name(), newton_from};
 
-    const Tape tape(surface_of(object));
-    const SearchRegion region(tape, object.bounds);
-    RootFinderSettings settings = settings_for_scale(region.scale());
-    settings.newton_start = subject.newton_from;
+    const ObjectProbe probe_object(placed, newton_from);
 
     // --compare: another scene's object, drawn along the same ray.
     std::optional<Scene> compare_scene;
@@ -138,10 +134,10 @@ int ray_command(const std::vector<std::string>& args) {
 
     std::string output;
     for (const Ray& ray : rays) {
-        const RayProbe probe = probe_ray(tape, region, to_object_space(placed, ray), methods, settings);
+        const RayProbe probe = probe_object.probe(ray, methods);
         if (plot_file) {
             if (!probe.span) throw std::runtime_error("cannot plot: the ray misses the object's bounds");
-            write_svg_plot(ray_plot(subject, probe, tape, compared), *plot_file);
+            write_svg_plot(ray_plot(subject, probe, probe_object.tape(), compared), *plot_file);
             std::fprintf(stderr, "zeroset: wrote %s\n", plot_file->string().c_str());
         }
         if (options.has("--json")) output += ray_report_json(subject, probe) + "\n";

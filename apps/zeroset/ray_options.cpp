@@ -55,23 +55,11 @@ std::optional<std::pair<double, double>> range_option(const Options& options, co
 }
 
 PlacedObject find_object(const Scene& scene, const std::optional<std::string>& name) {
-    const std::vector<PlacedObject> objects = placed_objects(scene);
-    if (objects.empty()) throw UsageError("the scene has no objects");
-    if (!name) return objects.front();
-    std::string names;
-    for (const PlacedObject& object : objects) {
-        if (object.name() == *name) return object;
-        const std::string quoted = "'" + object.name() + "'";
-        if (!object.name().empty() && names.find(quoted) == std::string::npos)
-            names += (names.empty() ? "" : ", ") + quoted;
+    try {
+        return find_placed_object(scene, name);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
     }
-    throw UsageError("the scene has no object named '" + *name + "'" +
-                     (names.empty() ? std::string(" (its objects have no names)") : " (it has " + names + ")"));
-}
-
-Ray to_object_space(const PlacedObject& object, const Ray& ray) {
-    const Mat4 to_object = object.to_scene.inverse().value();  // transforms are checked invertible when read
-    return {to_object.transform_point(ray.origin), to_object.transform_vector(ray.dir)};
 }
 
 }  // namespace zeroset::cli

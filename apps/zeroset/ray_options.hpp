@@ -27,13 +27,7 @@ std::optional<Vec3d> vector_option(const Options& options, const std::string& na
 /// The option's value as a range `MIN,MAX` with MIN < MAX, or nothing when absent.
 std::optional<std::pair<double, double>> range_option(const Options& options, const std::string& name);
 
-/// The object called `name` (its first placement), or the first object when
-/// no name is given. A name the scene does not have is a UsageError listing
-/// the names it has.
+/// find_placed_object, its complaint a UsageError.
 PlacedObject find_object(const Scene& scene, const std::optional<std::string>& name);
-
-/// A ray given in the scene's space, in the placed object's own space (its
-/// transforms undone); t means the same point on both.
-Ray to_object_space(const PlacedObject& object, const Ray& ray);
 
 }  // namespace zeroset::cli

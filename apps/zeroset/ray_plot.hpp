@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "ray_probe.hpp"
-#include "ray_report.hpp"
+#include "zeroset/render/ray_probe.hpp"
+#include "zeroset/render/ray_report.hpp"
 #include "zeroset/io/svg_plot.hpp"
 
 namespace zeroset::cli {

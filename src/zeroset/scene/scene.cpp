@@ -1,6 +1,8 @@
 // Building and walking the scene's tree.
 #include "zeroset/scene/scene.hpp"
 
+#include <stdexcept>
+
 namespace zeroset {
 
 Expr surface_of(const Object& object) { return object.blob ? object.blob->field_expression() : object.surface; }
@@ -32,6 +34,26 @@ std::vector<PlacedObject> placed_objects(const Scene& scene) {
     std::vector<PlacedObject> out;
     for (const SceneNodePtr& node : scene.nodes) collect(*node, Mat4::identity(), Material{}, out);
     return out;
+}
+
+PlacedObject find_placed_object(const Scene& scene, const std::optional<std::string>& name) {
+    const std::vector<PlacedObject> objects = placed_objects(scene);
+    if (objects.empty()) throw std::invalid_argument("the scene has no objects");
+    if (!name) return objects.front();
+    std::string names;
+    for (const PlacedObject& object : objects) {
+        if (object.name() == *name) return object;
+        const std::string quoted = "'" + object.name() + "'";
+        if (!object.name().empty() && names.find(quoted) == std::string::npos)
+            names += (names.empty() ? "" : ", ") + quoted;
+    }
+    throw std::invalid_argument("the scene has no object named '" + *name + "'" +
+                                (names.empty() ? std::string(" (its objects have no names)") : " (it has " + names + ")"));
+}
+
+Ray to_object_space(const PlacedObject& object, const Ray& ray) {
+    const Mat4 to_object = object.to_scene.inverse().value();  // transforms are checked invertible when read
+    return {to_object.transform_point(ray.origin), to_object.transform_vector(ray.dir)};
 }
 
 }  // namespace zeroset

@@ -11,6 +11,7 @@
 #include "zeroset/expr/blob_model.hpp"
 #include "zeroset/expr/expr.hpp"
 #include "zeroset/math/mat4.hpp"
+#include "zeroset/math/ray.hpp"
 #include "zeroset/math/vec3.hpp"
 #include "zeroset/trace/bounds.hpp"
 #include "zeroset/accel/octree.hpp"
@@ -121,5 +122,14 @@ struct PlacedObject {
 
 /// Every placement of every object, depth first in the order written.
 std::vector<PlacedObject> placed_objects(const Scene& scene);
+
+/// The first placement of the object called `name`, or the scene's first
+/// object when no name is given. Throws std::invalid_argument when the scene
+/// has no objects, or none of that name (the message lists the names it has).
+PlacedObject find_placed_object(const Scene& scene, const std::optional<std::string>& name);
+
+/// A ray given in the scene's space, in the placed object's own space (its
+/// transforms undone); t means the same point on both.
+Ray to_object_space(const PlacedObject& object, const Ray& ray);
 
 }  // namespace zeroset

@@ -1,12 +1,12 @@
 // Formatting a RayProbe as a table and as JSON.
-#include "ray_report.hpp"
+#include "zeroset/render/ray_report.hpp"
 
 #include <algorithm>
 #include <cstdio>
 
 #include "zeroset/io/json_writer.hpp"
 
-namespace zeroset::cli {
+namespace zeroset {
 
 namespace {
 
@@ -111,4 +111,4 @@ std::string ray_report_json(const RaySubject& subject, const RayProbe& probe) {
     return json.text();
 }
 
-}  // namespace zeroset::cli
+}  // namespace zeroset

@@ -1,12 +1,12 @@
 // Running the methods on one ray.
-#include "ray_probe.hpp"
+#include "zeroset/render/ray_probe.hpp"
 
 #include <exception>
 #include <limits>
 
 #include "zeroset/trace/choose_method.hpp"
 
-namespace zeroset::cli {
+namespace zeroset {
 
 namespace {
 
@@ -59,4 +59,14 @@ std::string method_label(const MethodOutcome& outcome) {
     return std::string(method_name(outcome.method));
 }
 
-}  // namespace zeroset::cli
+ObjectProbe::ObjectProbe(const PlacedObject& placed, std::optional<double> newton_from)
+    : placed_(placed), tape_(surface_of(placed.object())), region_(tape_, placed.object().bounds),
+      settings_(settings_for_scale(region_.scale())) {
+    settings_.newton_start = newton_from;
+}
+
+RayProbe ObjectProbe::probe(const Ray& scene_ray, std::span<const Method> methods) const {
+    return probe_ray(tape_, region_, to_object_space(placed_, scene_ray), methods, settings_);
+}
+
+}  // namespace zeroset

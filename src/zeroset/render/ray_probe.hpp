@@ -11,10 +11,11 @@
 #include <vector>
 
 #include "zeroset/expr/tape.hpp"
+#include "zeroset/scene/scene.hpp"
 #include "zeroset/trace/root_finder.hpp"
 #include "zeroset/trace/search_region.hpp"
 
-namespace zeroset::cli {
+namespace zeroset {
 
 struct MethodOutcome {
     Method method;    // as asked; may be Method::Auto
@@ -46,7 +47,23 @@ struct RayProbe {
 RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray, std::span<const Method> methods,
                    const RootFinderSettings& settings);
 
+/// A placed object of a scene made ready for probing rays given in the
+/// scene's space: its tape, its search region, and root-finder settings for
+/// its size (with Newton's start when one is asked for).
+class ObjectProbe {
+public:
+    ObjectProbe(const PlacedObject& placed, std::optional<double> newton_from);
+    [[nodiscard]] RayProbe probe(const Ray& scene_ray, std::span<const Method> methods) const;
+    [[nodiscard]] const Tape& tape() const { return tape_; }
+
+private:
+    PlacedObject placed_;
+    Tape tape_;
+    SearchRegion region_;
+    RootFinderSettings settings_;
+};
+
 /// "auto (sphere)" for auto, else the method's name.
 std::string method_label(const MethodOutcome& outcome);
 
-}  // namespace zeroset::cli
+}  // namespace zeroset

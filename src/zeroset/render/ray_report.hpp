@@ -5,9 +5,9 @@
 #include <optional>
 #include <string>
 
-#include "ray_probe.hpp"
+#include "zeroset/render/ray_probe.hpp"
 
-namespace zeroset::cli {
+namespace zeroset {
 
 /// Where the ray was cast, for the report's header.
 struct RaySubject {
@@ -23,4 +23,4 @@ std::string ray_report_text(const RaySubject& subject, const RayProbe& probe);
 /// significant digits, null where there is no value.
 std::string ray_report_json(const RaySubject& subject, const RayProbe& probe);
 
-}  // namespace zeroset::cli
+}  // namespace zeroset
