@@ -13,6 +13,8 @@ packages=(
   libgtest-dev libgmock-dev           # tests
   libmpfi-dev libmpfr-dev libgmp-dev  # high-precision oracles for the tests
   libbenchmark-dev                    # benchmarks
+  python3-dev pybind11-dev            # the Python module, for Debian's python3
+  python3-numpy python3-pytest        # …its arrays and its tests
 )
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang libclang-rt-dev)      # libFuzzer, ASan, UBSan

@@ -8,15 +8,10 @@
 
 #include "options.hpp"
 #include "zeroset/math/vec3.hpp"
+#include "zeroset/render/ray_probe.hpp"
 #include "zeroset/scene/scene.hpp"
 
 namespace zeroset::cli {
-
-/// The survey's ray (§1, eq. 4), with the anchor as its eq. (9) writes it.
-/// The direction is used as given — it is not quite unit length, and the
-/// survey's t values are for it as it is.
-inline constexpr Vec3d survey_origin{-4.905, -0.67, 0.364};
-inline constexpr Vec3d survey_dir{0.981, 0.174, 0.0872};
 
 /// The option's value as one finite number, or nothing when absent.
 std::optional<double> number_option(const Options& options, const std::string& name);

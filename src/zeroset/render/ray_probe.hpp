@@ -17,6 +17,12 @@
 
 namespace zeroset {
 
+/// The survey's ray (§1, eq. 4), with the anchor as its eq. (9) writes it.
+/// The direction is used as given — it is not quite unit length, and the
+/// survey's t values are for it as it is.
+inline constexpr Vec3d survey_origin{-4.905, -0.67, 0.364};
+inline constexpr Vec3d survey_dir{0.981, 0.174, 0.0872};
+
 struct MethodOutcome {
     Method method;    // as asked; may be Method::Auto
     Method resolved;  // what ran: never Method::Auto

@@ -198,6 +198,13 @@ std::string counts_accepted(const std::vector<const Builtin*>& overloads) {
 
 bool is_builtin_function(std::string_view name) { return !entries_named(name).empty(); }
 
+std::vector<std::string_view> builtin_function_names() {
+    std::vector<std::string_view> names;
+    for (const Builtin& b : table())
+        if (names.empty() || names.back() != b.name) names.push_back(b.name);  // a name's entries are adjacent
+    return names;
+}
+
 Value call_builtin_function(const TokenStream& in, const Token& name, std::span<const Argument> arguments) {
     const std::vector<const Builtin*> overloads = entries_named(name.text);
     const std::string fn(name.text);

@@ -12,6 +12,7 @@
 
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "zeroset/scene/token_stream.hpp"
 #include "zeroset/scene/value.hpp"
@@ -26,6 +27,9 @@ struct Argument {
 
 /// True when `name` is a built-in function of this table.
 bool is_builtin_function(std::string_view name);
+
+/// The table's names, each once, in the table's order.
+std::vector<std::string_view> builtin_function_names();
 
 /// Calls the built-in function `name` (is_builtin_function(name)) with the
 /// arguments, or fails through `in` — at the name for a wrong argument count

@@ -16,6 +16,8 @@
 #include "zeroset/scene/algebraic_surfaces.hpp"
 #include "zeroset/scene/builtin_functions.hpp"
 #include "zeroset/scene/constant_value.hpp"
+#include "zeroset/scene/scene_error.hpp"
+#include "zeroset/scene/scene_limits.hpp"
 #include "zeroset/scene/file_text.hpp"
 #include "zeroset/scene/wording.hpp"
 
@@ -271,6 +273,29 @@ Value parse_expression(TokenStream& in, const ExpressionContext& context) {
     } catch (const ExpressionTooLarge& e) {
         in.fail(start, std::string("this expression is too large: ") + e.what() + " (docs/limits.md)");
     }
+}
+
+std::vector<std::string> function_names() {
+    std::vector<std::string> names;
+    for (const std::string_view name : builtin_function_names()) names.emplace_back(name);
+    for (const AlgebraicSurface& surface : algebraic_surfaces()) names.emplace_back(surface.name);
+    names.emplace_back(model_function);
+    return names;
+}
+
+Value evaluate_expression_text(std::string_view text, const std::vector<std::pair<std::string, Value>>& bindings,
+                               const std::string& file_name, const std::filesystem::path& base_dir) {
+    TokenStream in(file_name, std::string(text));
+    Scope scope;
+    for (const auto& [name, value] : bindings) {
+        if (is_builtin_name(name) || scope.find(name))
+            throw SceneError(file_name, "'" + name + "' cannot be bound: it is a built-in name or bound twice");
+        scope.define(name, {value, file_name, nullptr});
+    }
+    ModelLibrary models;
+    const Value value = parse_expression(in, {scope, models, base_dir, SceneLimits{}.expression_nesting});
+    if (!in.at(TokenKind::End)) in.fail_expected("the end of the expression");
+    return value;
 }
 
 bool is_builtin_name(std::string_view name) {

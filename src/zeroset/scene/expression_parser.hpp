@@ -6,7 +6,10 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "zeroset/scene/model_library.hpp"
 #include "zeroset/scene/scope.hpp"
@@ -25,6 +28,16 @@ struct ExpressionContext {
 
 /// Reads one expression from `in`; stops at the first token that cannot continue it.
 Value parse_expression(TokenStream& in, const ExpressionContext& context);
+
+/// Every function the language defines — the built-in table's, the named
+/// algebraic surfaces and model — each once.
+std::vector<std::string> function_names();
+
+/// Reads the whole of `text` as one expression, with `bindings` visible as
+/// names (as if bound by `let`) and model paths relative to `base_dir`.
+/// Throws SceneError naming `file_name` with the line and column in `text`.
+Value evaluate_expression_text(std::string_view text, const std::vector<std::pair<std::string, Value>>& bindings,
+                               const std::string& file_name, const std::filesystem::path& base_dir);
 
 /// True for the names the language defines itself (x, y, z, pi and the
 /// function names), which `let` may not bind.

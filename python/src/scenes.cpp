@@ -1,0 +1,168 @@
+// Scenes from Python: load or parse scene files, or build one — camera,
+// lights, materials and objects with their bounds, method and placement —
+// with the same defaults as the scene language.
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "bindings.hpp"
+#include "vec3_caster.hpp"
+#include "zeroset/scene/load_scene.hpp"
+
+namespace zeroset::python {
+
+namespace {
+
+template <class T, class FromName>
+T named(const std::string& name, FromName from_name, const char* what) {
+    if (const auto value = from_name(name)) return *value;
+    throw py::value_error("unknown " + std::string(what) + " '" + name + "'");
+}
+
+/// scale, then rotate (degrees about x, then y, then z), then translate —
+/// the order a placement is usually thought of in.
+Mat4 placement(const std::optional<py::object>& scale, const std::optional<Vec3d>& rotate,
+               const std::optional<Vec3d>& translate) {
+    Mat4 m = Mat4::identity();
+    if (scale) {
+        const Vec3d s = py::isinstance<py::sequence>(*scale) ? scale->cast<Vec3d>()
+                                                              : Vec3d{1, 1, 1} * scale->cast<double>();
+        if (s.x == 0.0 || s.y == 0.0 || s.z == 0.0) throw py::value_error("a scale of 0 would flatten the object");
+        m = Mat4::scale(s) * m;
+    }
+    if (rotate) m = Mat4::rotate_xyz_degrees(*rotate) * m;
+    if (translate) m = Mat4::translate(*translate) * m;
+    if (!m.is_finite() || !m.inverse()) throw py::value_error("the placement must be finite and invertible");
+    return m;
+}
+
+Bounds bounds_from(const py::object& given) {
+    if (given.is_none()) return default_object_bounds();
+    if (py::isinstance<Bounds>(given)) return given.cast<Bounds>();
+    const auto corners = given.cast<std::pair<Vec3d, Vec3d>>();  // (lo, hi)
+    const Box3 box{corners.first, corners.second};
+    if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z))
+        throw py::value_error("bounds (lo, hi) need lo < hi in every coordinate");
+    return Bounds::make_box(box);
+}
+
+void add_object(Scene& scene, const Expr& surface, const std::string& name, const py::object& bounds,
+                const std::optional<Material>& material, const std::string& method, const std::string& normals,
+                const std::optional<py::object>& scale, const std::optional<Vec3d>& rotate,
+                const std::optional<Vec3d>& translate) {
+    Object object;
+    object.surface = surface;
+    object.bounds = bounds_from(bounds);
+    object.method = named<Method>(method, method_from_name, "method");
+    object.normals = named<NormalMode>(normals, normal_mode_from_name, "normal mode");
+    auto node = std::make_shared<SceneNode>(*make_object_node(object, name, material));
+    node->transform = placement(scale, rotate, translate);
+    scene.nodes.push_back(std::move(node));
+}
+
+}  // namespace
+
+void bind_scenes(py::module_& m) {
+    py::class_<Camera>(m, "Camera", "A pinhole camera; fov is the vertical field of view in degrees.")
+        .def(py::init([](Vec3d from, Vec3d at, Vec3d up, double fov) { return Camera{from, at, up, fov}; }),
+             py::arg("from_") = Camera{}.from, py::arg("at") = Camera{}.at, py::arg("up") = Camera{}.up,
+             py::arg("fov") = Camera{}.fov_degrees)
+        .def_readwrite("from_", &Camera::from)
+        .def_readwrite("at", &Camera::at)
+        .def_readwrite("up", &Camera::up)
+        .def_readwrite("fov", &Camera::fov_degrees);
+
+    py::class_<Light>(m, "Light", "A point light (not attenuated) or a directional one.")
+        .def_static(
+            "point",
+            [](Vec3d position, Vec3d color, bool shadows) {
+                return Light{Light::Kind::Point, position, {}, color, shadows};
+            },
+            py::arg("position"), py::arg("color") = Vec3d{1, 1, 1}, py::arg("shadows") = true)
+        .def_static(
+            "directional",
+            [](Vec3d direction, Vec3d color, bool shadows) {
+                return Light{Light::Kind::Directional, {}, direction, color, shadows};
+            },
+            py::arg("direction"), py::arg("color") = Vec3d{1, 1, 1}, py::arg("shadows") = true)
+        .def_property_readonly("is_point", [](const Light& l) { return l.kind == Light::Kind::Point; })
+        .def_readwrite("position", &Light::position)
+        .def_readwrite("direction", &Light::direction)
+        .def_readwrite("color", &Light::color)
+        .def_readwrite("shadows", &Light::casts_shadows);
+
+    const Material plain;
+    py::class_<Material>(m, "Material", "Blinn–Phong: colour (linear RGB), ambient, diffuse, specular, shininess.")
+        .def(py::init([](Vec3d color, double ambient, double diffuse, double specular, double shininess) {
+                 return Material{color, ambient, diffuse, specular, shininess};
+             }),
+             py::arg("color") = plain.color, py::arg("ambient") = plain.ambient, py::arg("diffuse") = plain.diffuse,
+             py::arg("specular") = plain.specular, py::arg("shininess") = plain.shininess)
+        .def_readwrite("color", &Material::color)
+        .def_readwrite("ambient", &Material::ambient)
+        .def_readwrite("diffuse", &Material::diffuse)
+        .def_readwrite("specular", &Material::specular)
+        .def_readwrite("shininess", &Material::shininess);
+
+    py::class_<Bounds>(m, "Bounds", "Where an object's surface lies: a box, a sphere, or none (a half-space, say).")
+        .def_static("box", [](Vec3d lo, Vec3d hi) { return bounds_from(py::make_tuple(lo, hi)); }, py::arg("lo"),
+                    py::arg("hi"))
+        .def_static(
+            "sphere",
+            [](Vec3d center, double radius) {
+                if (!(radius > 0.0)) throw py::value_error("a bounding sphere needs a positive radius");
+                return Bounds::make_sphere(center, radius);
+            },
+            py::arg("center"), py::arg("radius"))
+        .def_static("none", &Bounds::none);
+
+    py::class_<Scene>(m, "Scene",
+                      "What to render: camera, lights, background, image size and objects. Scene() is empty "
+                      "(a render adds a headlight when it has no lights).")
+        .def(py::init<>())
+        .def_readwrite("camera", &Scene::camera)
+        .def_readwrite("background", &Scene::background)
+        .def_readwrite("ambient", &Scene::ambient)
+        .def_property(
+            "width", [](const Scene& s) { return s.image.width; }, [](Scene& s, int w) { s.image.width = w; })
+        .def_property(
+            "height", [](const Scene& s) { return s.image.height; }, [](Scene& s, int h) { s.image.height = h; })
+        .def_property(
+            "spp", [](const Scene& s) { return s.image.samples_per_pixel; },
+            [](Scene& s, int n) { s.image.samples_per_pixel = n; })
+        .def_property_readonly("lights", [](const Scene& s) { return s.lights; }, "A copy; add with add_light().")
+        .def("add_light", [](Scene& s, const Light& light) { s.lights.push_back(light); }, py::arg("light"))
+        .def("add_object", &add_object, py::arg("surface"), py::kw_only(), py::arg("name") = "",
+             py::arg("bounds") = py::none(), py::arg("material") = py::none(), py::arg("method") = "auto",
+             py::arg("normals") = "analytic", py::arg("scale") = py::none(), py::arg("rotate") = py::none(),
+             py::arg("translate") = py::none(),
+             "Adds an object: f within bounds (a Bounds, or (lo, hi) corners; default the box ±10), placed by "
+             "scale, then rotate (degrees about x, y, z), then translate.")
+        .def_property_readonly(
+            "objects",
+            [](const Scene& s) {
+                py::list names;
+                for (const PlacedObject& placed : placed_objects(s)) names.append(placed.name());
+                return names;
+            },
+            "The names of the scene's objects, one per placement, in order.")
+        .def("surface", [](const Scene& s, const std::optional<std::string>& name) {
+            return surface_of(find_placed_object(s, name).object());
+        }, py::arg("name") = py::none(), "The f of an object (the first when no name is given), in its own space.");
+
+    m.def("load_scene", [](const std::string& path) { return load_scene(path); }, py::arg("path"),
+          "Reads a .zs scene file; includes and models are found relative to it.");
+    m.def(
+        "parse_scene",
+        [](const std::string& text, const std::string& name, const std::string& base_dir) {
+            return parse_scene(text, name, base_dir);
+        },
+        py::arg("text"), py::arg("name") = "<string>", py::arg("base_dir") = ".",
+        "Parses scene text; errors name `name`, and includes and models are relative to base_dir.");
+    m.def("default_scene", &default_scene, "The built-in default scene (the survey's Figure 1).");
+}
+
+}  // namespace zeroset::python

@@ -1,0 +1,101 @@
+# render(), slice(), ray() and write_image(): the same numbers as the
+# command-line program, arrays of the documented shapes, the GIL released
+# while rendering, and errors as Python exceptions.
+import json
+import math
+import shutil
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import zeroset as zs
+from conftest import read_pfm
+from zeroset import x, y, z
+
+
+def test_render_gives_the_programs_image(binary, tmp_path):
+    rgb = zs.render(zs.default_scene(), 64, 48, spp=2, threads=2)
+    assert rgb.shape == (48, 64, 3) and rgb.dtype == np.float32
+    out = tmp_path / "out.pfm"
+    subprocess.run([binary, "render", "-q", "-o", str(out), "--width", "64", "--height", "48", "--spp", "2"],
+                   check=True)
+    np.testing.assert_array_equal(rgb, read_pfm(out))
+
+
+def test_layers_are_depth_and_normals_of_the_hits():
+    scene = zs.default_scene()
+    rgb, depth, normals = zs.render(scene, 80, 60, threads=2, layers=True)
+    assert depth.shape == (60, 80) and normals.shape == (60, 80, 3)
+    hit = np.isfinite(depth)
+    background = np.all(np.abs(rgb - np.float32(scene.background)) < 1e-6, axis=2)
+    assert np.array_equal(hit, ~background)
+    np.testing.assert_allclose(np.linalg.norm(normals[hit], axis=1), 1, atol=1e-5)
+    assert not normals[~hit].any()
+    assert depth[hit].min() > 0
+
+
+def test_the_gil_is_released_while_rendering():
+    done = []
+    worker = threading.Thread(target=lambda: done.append(zs.render(zs.default_scene(), 320, 240, threads=1)))
+    worker.start()
+    spins = 0
+    while worker.is_alive():
+        spins += 1
+    worker.join()
+    assert done and spins > 1000  # this thread ran while the render did
+
+
+def test_slice_samples_f_at_pixel_centres():
+    f = x**2 + y**2 - 0.5 + 0.1 * zs.sin(5 * x)
+    n = 64
+    values = zs.slice(f, size=n, axis="z", at=0.0, region=(-1.0, 1.0))
+    assert values.shape == (n, n) and values.dtype == np.float32
+    centres = -1 + (np.arange(n) + 0.5) * 2 / n
+    expected = f(centres[None, :], centres[::-1, None], 0.0)  # row 0 at the top: y decreasing
+    np.testing.assert_allclose(values, expected, atol=1e-5)
+    with pytest.raises(ValueError, match="unknown axis"):
+        zs.slice(f, axis="w")
+
+
+def test_ray_gives_the_programs_json(binary):
+    result = subprocess.run([binary, "ray", "--json"], check=True, capture_output=True, text=True)
+    assert zs.ray() == json.loads(result.stdout)
+    one = zs.ray(method="interval")
+    assert [m["method"] for m in one["methods"]] == ["interval"]
+    scene = zs.parse_scene('object "s" { surface x^2 + y^2 + z^2 - 1  bounds box((-2,-2,-2),(2,2,2)) }')
+    hit = zs.ray(scene, origin=(-5, 0, 0), dir=(1, 0, 0), method="polynomial")
+    assert hit["methods"][0]["first_hit"] == pytest.approx(4.0)
+    with pytest.raises(ValueError, match="origin and dir"):
+        zs.ray(scene)
+
+
+def test_write_image_by_extension(tmp_path):
+    rgb = np.random.default_rng(1).random((6, 5, 3), dtype=np.float32)
+    zs.write_image(str(tmp_path / "a.pfm"), rgb)
+    np.testing.assert_array_equal(read_pfm(tmp_path / "a.pfm"), rgb)
+    depth = np.full((6, 5), np.inf, dtype=np.float32)
+    normals = np.zeros((6, 5, 3), dtype=np.float32)
+    zs.write_image(str(tmp_path / "a.exr"), rgb, depth, normals)
+    if shutil.which("exrheader"):
+        header = subprocess.run(["exrheader", str(tmp_path / "a.exr")], check=True, capture_output=True, text=True)
+        for channel in ["R", "G", "B", "Z", "N.x", "N.y", "N.z"]:
+            assert f"    {channel}, 32-bit floating-point" in header.stdout
+    with pytest.raises(ValueError, match="together"):
+        zs.write_image(str(tmp_path / "b.exr"), rgb, depth)
+    with pytest.raises(ValueError, match="shape"):
+        zs.write_image(str(tmp_path / "b.png"), rgb[:, :, :2])
+    with pytest.raises(OSError, match="unsupported image format"):
+        zs.write_image(str(tmp_path / "b.jpg"), rgb)
+
+
+def test_render_errors_are_render_errors():
+    with pytest.raises(zs.RenderError, match="width must be between"):
+        zs.render(zs.default_scene(), 0, 10)
+    scene = zs.Scene()
+    scene.add_object(zs.sqrt(x) + y**2 + z**2 - 1, name="bad", bounds=((-2, -2, -2), (2, 2, 2)))
+    with pytest.raises(zs.RenderError, match="'bad' evaluates to NaN"):
+        zs.render(scene, 16, 16)
+    with pytest.raises(ValueError, match="unknown method"):
+        zs.render(zs.default_scene(), 8, 8, method="magic")

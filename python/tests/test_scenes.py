@@ -1,0 +1,76 @@
+# Scenes from Python: loading and parsing files with located errors, and
+# building a scene — camera, lights, materials, objects and placements.
+import numpy as np
+import pytest
+
+import zeroset as zs
+from conftest import SOURCE_DIR
+from zeroset import x, y, z
+
+
+def ball_scene(**placement):
+    scene = zs.Scene()
+    scene.camera = zs.Camera(from_=(0, 0, -6), at=(0, 0, 0), fov=40)
+    scene.add_light(zs.Light.point((-5, 5, -5)))
+    scene.add_object(x**2 + y**2 + z**2 - 1, name="ball", bounds=((-1.5, -1.5, -1.5), (1.5, 1.5, 1.5)),
+                     material=zs.Material(color=(0.9, 0.2, 0.1)), **placement)
+    return scene
+
+
+def hit_mask(scene, width=65, height=65):
+    _, depth, _ = zs.render(scene, width, height, threads=2, layers=True)
+    return np.isfinite(depth)
+
+
+def test_scene_files_load_and_parse():
+    scene = zs.load_scene(str(SOURCE_DIR / "scenes" / "hart1993" / "blinn_blobs.zs"))
+    assert scene.objects == zs.default_scene().objects == ["blobs", "floor"]
+    text = 'camera { from (0, 0, -5) }\nobject "s" { surface x^2 + y^2 + z^2 - 1 }\n'
+    assert zs.parse_scene(text).objects == ["s"]
+    assert zs.parse_scene(text).surface("s")(0, 0, 0) == -1
+
+
+def test_scene_mistakes_carry_their_place():
+    with pytest.raises(zs.SceneError) as error:
+        zs.parse_scene('object "s" {\n  surface x^2 +\n}\n', name="mine.zs")
+    assert (error.value.file, error.value.line) == ("mine.zs", 3)
+    assert error.value.column == 1
+    with pytest.raises(zs.SceneError) as missing:
+        zs.load_scene("/no/such/scene.zs")
+    assert missing.value.line == 0 and "cannot open" in missing.value.message
+
+
+def test_a_built_scene_renders_what_it_says():
+    scene = ball_scene()
+    assert scene.objects == ["ball"]
+    rgb = zs.render(scene, 65, 65, threads=2)
+    centre, corner = rgb[32, 32], rgb[0, 0]
+    np.testing.assert_allclose(corner, scene.background, rtol=1e-6)
+    assert centre[0] > 3 * centre[2]  # the material's red
+    mask = hit_mask(scene)
+    # The ball's silhouette: radius atan(1/sqrt(35)) of the 20° half-view.
+    expected = np.pi * (np.tan(np.arcsin(1 / 6)) / np.tan(np.radians(20)) * 32.5) ** 2
+    assert mask.sum() == pytest.approx(expected, rel=0.05)
+
+
+def test_placement_moves_and_scales_the_object():
+    base = hit_mask(ball_scene())
+    moved = hit_mask(ball_scene(translate=(1, 0, 0)))
+    columns = np.nonzero(moved.any(axis=0))[0].mean() - np.nonzero(base.any(axis=0))[0].mean()
+    assert columns > 5  # to the right on screen: +x is right for this camera
+    small = hit_mask(ball_scene(scale=0.5))
+    assert small.sum() == pytest.approx(base.sum() / 4, rel=0.1)
+
+
+def test_bad_building_blocks_are_value_errors():
+    scene = zs.Scene()
+    with pytest.raises(ValueError, match="unknown method"):
+        scene.add_object(x, method="magic")
+    with pytest.raises(ValueError, match="lo < hi"):
+        scene.add_object(x, bounds=((1, 0, 0), (0, 1, 1)))
+    with pytest.raises(ValueError, match="scale of 0"):
+        scene.add_object(x, scale=0)
+    with pytest.raises(ValueError, match="positive radius"):
+        zs.Bounds.sphere((0, 0, 0), -1)
+    with pytest.raises(ValueError, match="no objects"):
+        scene.surface()
