@@ -4,6 +4,8 @@
 
 #include <unistd.h>
 
+#include <cstdio>
+
 namespace zeroset::cli {
 
 std::string image_output_help(const std::string& default_name) {
@@ -17,7 +19,7 @@ std::string image_output_help(const std::string& default_name) {
            "  --format F          png, ppm, pfm or exr: the format for '-o -' (default png)\n";
 }
 
-ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& default_name) {
+ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& default_name, bool numbered) {
     if (options.value("-o") && options.value("--output")) throw UsageError("give -o or --output, not both");
     const std::string given = options.value("-o").value_or(options.value("--output").value_or(""));
     std::optional<ImageFormat> named;
@@ -26,6 +28,7 @@ ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& de
         if (!named) throw UsageError("unknown image format '" + *name + "' (give png, ppm, pfm or exr)");
     }
     if (given == "-") {
+        if (numbered) throw UsageError("frames are written to numbered files, not to standard output");
         format_ = named.value_or(ImageFormat::Png);
         if (::isatty(STDOUT_FILENO)) throw UsageError("standard output is a terminal; redirect it to a file or a pipe");
         return;
@@ -36,16 +39,23 @@ ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& de
     if (named && *named != format_)
         throw UsageError("--format does not match the extension of " + path_.string() +
                          " (--format is for '-o -'; the extension names a file's format)");
-    check_image_output(path_);
+    check_image_output(path_of(numbered ? 0 : -1));
 }
 
-std::string ImageOutput::name() const { return path_.empty() ? "<stdout>" : path_.string(); }
+std::filesystem::path ImageOutput::path_of(int frame) const {
+    if (frame < 0) return path_;
+    char number[16];
+    std::snprintf(number, sizeof number, "_%04d", frame);
+    return path_.parent_path() / (path_.stem().string() + number + path_.extension().string());
+}
 
-void ImageOutput::write(const Image& image) const {
+std::string ImageOutput::name(int frame) const { return path_.empty() ? "<stdout>" : path_of(frame).string(); }
+
+void ImageOutput::write(const Image& image, int frame) const {
     if (path_.empty())
         write_image_to_stdout(image, format_);
     else
-        write_image(image, path_);
+        write_image(image, path_of(frame));
 }
 
 }  // namespace zeroset::cli

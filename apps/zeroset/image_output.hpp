@@ -22,16 +22,20 @@ std::string image_output_help(const std::string& default_name);
 class ImageOutput {
 public:
     /// Reads -o/--output and --format; `default_name` when -o is absent.
-    /// Throws UsageError for a bad name or format, ImageWriteError when the
-    /// file could not be written.
-    ImageOutput(const Options& options, const std::filesystem::path& default_name);
+    /// `numbered`: a sequence of frames, each file's name numbered (not to
+    /// standard output). Throws UsageError for a bad name or format,
+    /// ImageWriteError when the (first) file could not be written.
+    ImageOutput(const Options& options, const std::filesystem::path& default_name, bool numbered = false);
 
     [[nodiscard]] ImageFormat format() const { return format_; }
-    /// The file name, or "<stdout>".
-    [[nodiscard]] std::string name() const;
-    void write(const Image& image) const;
+    /// The file name — with `_0042` before the extension for frame 42 of a
+    /// numbered output — or "<stdout>".
+    [[nodiscard]] std::string name(int frame = -1) const;
+    void write(const Image& image, int frame = -1) const;
 
 private:
+    [[nodiscard]] std::filesystem::path path_of(int frame) const;
+
     std::filesystem::path path_;  // empty for standard output
     ImageFormat format_;
 };

@@ -11,6 +11,7 @@
 #include "image_output.hpp"
 #include "options.hpp"
 #include "progress_bar.hpp"
+#include "ray_options.hpp"
 #include "zeroset/io/image_writer.hpp"
 #include "zeroset/render/renderer.hpp"
 #include "zeroset/scene/load_scene.hpp"
@@ -18,6 +19,9 @@
 namespace zeroset::cli {
 
 namespace {
+
+/// The most frames one render command makes.
+constexpr int max_frames = 100000;
 
 std::string render_usage() {
     return R"(Usage: zeroset render [SCENE] [options]
@@ -51,6 +55,10 @@ Options:
   --max-evaluations N stop with an error once the render has spent N
                       evaluations of the surfaces (default: 16384 per camera
                       ray, at least 4194304; see docs/limits.md)
+  --clock C           the value of the scene's `clock` (default 0)
+  --frames N          an animation: N frames with `clock` running from 0 to 1,
+                      written as OUT_0000.png, OUT_0001.png, … (OUT's name with
+                      the frame number before its extension)
   -q, --quiet         no progress bar and no summary line
   -h, --help          this text
 
@@ -59,31 +67,14 @@ A progress bar is drawn on stderr when it is a terminal; a one-line summary
 )";
 }
 
-}  // namespace
-
-int render_command(const std::vector<std::string>& args) {
-    std::vector<std::string> valued = {"--width",  "--height",    "--spp",       "--threads",
-                                       "--method", "--solver",    "--normals",   "--partition", "--max-evaluations"};
-    valued.insert(valued.end(), image_output_options.begin(), image_output_options.end());
-    const Options options(args, valued, {"-h", "--help", "-q", "--quiet"});
-    if (options.has("-h") || options.has("--help")) {
-        std::fputs(render_usage().c_str(), stdout);
-        return 0;
-    }
-    if (options.positional().size() > 1) throw UsageError("render takes at most one scene file");
-
-    const std::optional<std::filesystem::path> scene_file =
-        options.positional().empty() ? std::nullopt : std::optional(std::filesystem::path(options.positional()[0]));
-    const ImageOutput output(options, scene_file ? scene_file->stem().string() + ".png" : "zeroset.png");
-
-    const Scene scene = scene_file ? load_scene(*scene_file) : default_scene();
-
+/// The render's settings from the options, defaulting to the scene's.
+RenderSettings settings_for(const Options& options, const Scene& scene, bool layers) {
     RenderSettings settings;
     settings.width = options.integer("--width").value_or(scene.image.width);
     settings.height = options.integer("--height").value_or(scene.image.height);
     settings.samples_per_pixel = options.integer("--spp").value_or(scene.image.samples_per_pixel);
     settings.threads = options.integer("--threads").value_or(0);
-    settings.layers = output.format() == ImageFormat::Exr;
+    settings.layers = layers;
     if (const auto name = options.value("--method")) {
         settings.method = method_from_name(*name);
         if (!settings.method) throw UsageError("unknown method '" + *name + "' (try zeroset render --help)");
@@ -102,24 +93,72 @@ int render_command(const std::vector<std::string>& args) {
     }
     settings.max_evaluations = options.count("--max-evaluations");
     validate(settings);
+    return settings;
+}
 
-    const bool quiet = options.has("-q") || options.has("--quiet");
-    ProgressBar bar;
-    if (!quiet && bar.enabled()) {
-        settings.on_progress = [&bar](int done, int total) { bar.update(done, total); };
-        settings.on_prepare_progress = [&bar](int done, int total) { bar.update(done, total, "building octree"); };
+/// The clock of each frame: --clock's value, or 0 → 1 in equal steps over --frames.
+std::vector<double> frame_clocks(const Options& options) {
+    const int frames = options.integer("--frames").value_or(1);
+    if (frames < 1 || frames > max_frames)
+        throw UsageError("--frames must be between 1 and " + std::to_string(max_frames) + ", got " +
+                         std::to_string(frames));
+    const std::optional<double> clock = number_option(options, "--clock");
+    if (clock && options.value("--frames")) throw UsageError("give --clock or --frames, not both");
+    if (frames == 1) return {clock.value_or(0.0)};
+    std::vector<double> clocks;
+    for (int i = 0; i < frames; ++i) clocks.push_back(static_cast<double>(i) / (frames - 1));
+    return clocks;
+}
+
+Scene load(const std::optional<std::filesystem::path>& scene_file, double clock) {
+    return scene_file ? load_scene(*scene_file, {}, clock) : default_scene();
+}
+
+}  // namespace
+
+int render_command(const std::vector<std::string>& args) {
+    std::vector<std::string> valued = {"--width",     "--height",    "--spp",    "--threads",         "--method",
+                                       "--solver",    "--normals",   "--partition", "--max-evaluations", "--frames",
+                                       "--clock"};
+    valued.insert(valued.end(), image_output_options.begin(), image_output_options.end());
+    const Options options(args, valued, {"-h", "--help", "-q", "--quiet"});
+    if (options.has("-h") || options.has("--help")) {
+        std::fputs(render_usage().c_str(), stdout);
+        return 0;
     }
-    RenderResult result = [&] {
-        try {
-            return render(scene, settings);
-        } catch (...) {
-            bar.finish();
-            throw;
+    if (options.positional().size() > 1) throw UsageError("render takes at most one scene file");
+
+    const std::optional<std::filesystem::path> scene_file =
+        options.positional().empty() ? std::nullopt : std::optional(std::filesystem::path(options.positional()[0]));
+    const std::vector<double> clocks = frame_clocks(options);
+    const ImageOutput output(options, scene_file ? scene_file->stem().string() + ".png" : "zeroset.png",
+                             clocks.size() > 1);
+    const bool quiet = options.has("-q") || options.has("--quiet");
+    const bool layers = output.format() == ImageFormat::Exr;
+
+    for (std::size_t frame = 0; frame < clocks.size(); ++frame) {
+        const Scene scene = load(scene_file, clocks[frame]);
+        RenderSettings settings = settings_for(options, scene, layers);
+        ProgressBar bar;
+        if (!quiet && bar.enabled()) {
+            settings.on_progress = [&bar](int done, int total) { bar.update(done, total); };
+            settings.on_prepare_progress = [&bar](int done, int total) { bar.update(done, total, "building octree"); };
         }
-    }();
-    bar.finish();
-    output.write(result.image);
-    if (!quiet) std::fprintf(stderr, "zeroset: wrote %s — %s\n", output.name().c_str(), summary_line(result.stats).c_str());
+        RenderResult result = [&] {
+            try {
+                return render(scene, settings);
+            } catch (...) {
+                bar.finish();
+                throw;
+            }
+        }();
+        bar.finish();
+        const int number = clocks.size() > 1 ? static_cast<int>(frame) : -1;
+        output.write(result.image, number);
+        if (!quiet)
+            std::fprintf(stderr, "zeroset: wrote %s — %s\n", output.name(number).c_str(),
+                         summary_line(result.stats).c_str());
+    }
     return 0;
 }
 

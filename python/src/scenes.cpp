@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "bindings.hpp"
+#include "values.hpp"
 #include "vec3_caster.hpp"
 #include "zeroset/scene/load_scene.hpp"
 
@@ -37,6 +38,20 @@ Mat4 placement(const std::optional<py::object>& scale, const std::optional<Vec3d
     if (translate) m = Mat4::translate(*translate) * m;
     if (!m.is_finite() || !m.inverse()) throw py::value_error("the placement must be finite and invertible");
     return m;
+}
+
+/// A constant colour, or — when a component depends on x, y or z — a pattern.
+void set_color(Material& material, const py::object& color) {
+    const Value v = to_value(color, "the material color");
+    if (!v.is_vector()) throw py::type_error("the material color must be three numbers or Exprs");
+    if (variables_of(v.vector()).empty()) {
+        const Vec3d c{v.vector()[0].value(), v.vector()[1].value(), v.vector()[2].value()};
+        if (c.x < 0.0 || c.y < 0.0 || c.z < 0.0) throw py::value_error("the material color must not be negative");
+        material.color = c;
+        material.color_pattern.reset();
+    } else {
+        material.color_pattern = v.vector();
+    }
 }
 
 Bounds bounds_from(const py::object& given) {
@@ -95,17 +110,37 @@ void bind_scenes(py::module_& m) {
         .def_readwrite("shadows", &Light::casts_shadows);
 
     const Material plain;
-    py::class_<Material>(m, "Material", "Blinn–Phong: colour (linear RGB), ambient, diffuse, specular, shininess.")
-        .def(py::init([](Vec3d color, double ambient, double diffuse, double specular, double shininess) {
-                 return Material{color, ambient, diffuse, specular, shininess};
+    py::class_<Material>(m, "Material",
+                         "Blinn–Phong with a mirror share: color (linear RGB, or three Exprs of the object's own "
+                         "coordinates for a pattern), ambient, diffuse, specular, shininess, reflection.")
+        .def(py::init([](const py::object& color, double ambient, double diffuse, double specular, double shininess,
+                         double reflection) {
+                 Material material;
+                 set_color(material, color);
+                 material.ambient = ambient;
+                 material.diffuse = diffuse;
+                 material.specular = specular;
+                 material.shininess = shininess;
+                 if (!(reflection >= 0.0 && reflection <= 1.0)) throw py::value_error("reflection must be in [0, 1]");
+                 material.reflection = reflection;
+                 return material;
              }),
              py::arg("color") = plain.color, py::arg("ambient") = plain.ambient, py::arg("diffuse") = plain.diffuse,
-             py::arg("specular") = plain.specular, py::arg("shininess") = plain.shininess)
-        .def_readwrite("color", &Material::color)
+             py::arg("specular") = plain.specular, py::arg("shininess") = plain.shininess,
+             py::arg("reflection") = plain.reflection)
+        .def_property(
+            "color",
+            [](const Material& material) -> py::object {
+                if (!material.color_pattern) return py::cast(material.color);
+                const auto& p = *material.color_pattern;
+                return py::make_tuple(p[0], p[1], p[2]);
+            },
+            &set_color)
         .def_readwrite("ambient", &Material::ambient)
         .def_readwrite("diffuse", &Material::diffuse)
         .def_readwrite("specular", &Material::specular)
-        .def_readwrite("shininess", &Material::shininess);
+        .def_readwrite("shininess", &Material::shininess)
+        .def_readwrite("reflection", &Material::reflection);
 
     py::class_<Bounds>(m, "Bounds", "Where an object's surface lies: a box, a sphere, or none (a half-space, say).")
         .def_static("box", [](Vec3d lo, Vec3d hi) { return bounds_from(py::make_tuple(lo, hi)); }, py::arg("lo"),
@@ -131,6 +166,12 @@ void bind_scenes(py::module_& m) {
         .def_property(
             "height", [](const Scene& s) { return s.image.height; }, [](Scene& s, int h) { s.image.height = h; })
         .def_property(
+            "reflection_depth", [](const Scene& s) { return s.image.reflection_depth; },
+            [](Scene& s, int n) {
+                if (n < 0) throw py::value_error("reflection_depth must not be negative");
+                s.image.reflection_depth = n;
+            })
+        .def_property(
             "spp", [](const Scene& s) { return s.image.samples_per_pixel; },
             [](Scene& s, int n) { s.image.samples_per_pixel = n; })
         .def_property_readonly("lights", [](const Scene& s) { return s.lights; }, "A copy; add with add_light().")
@@ -153,14 +194,16 @@ void bind_scenes(py::module_& m) {
             return surface_of(find_placed_object(s, name).object());
         }, py::arg("name") = py::none(), "The f of an object (the first when no name is given), in its own space.");
 
-    m.def("load_scene", [](const std::string& path) { return load_scene(path); }, py::arg("path"),
-          "Reads a .zs scene file; includes and models are found relative to it.");
+    m.def("load_scene", [](const std::string& path, double clock) { return load_scene(path, {}, clock); },
+          py::arg("path"), py::arg("clock") = 0.0,
+          "Reads a .zs scene file; includes and models are found relative to it; `clock` is what the scene's clock "
+          "reads (an animation's time).");
     m.def(
         "parse_scene",
-        [](const std::string& text, const std::string& name, const std::string& base_dir) {
-            return parse_scene(text, name, base_dir);
+        [](const std::string& text, const std::string& name, const std::string& base_dir, double clock) {
+            return parse_scene(text, name, base_dir, {}, clock);
         },
-        py::arg("text"), py::arg("name") = "<string>", py::arg("base_dir") = ".",
+        py::arg("text"), py::arg("name") = "<string>", py::arg("base_dir") = ".", py::arg("clock") = 0.0,
         "Parses scene text; errors name `name`, and includes and models are relative to base_dir.");
     m.def("default_scene", &default_scene, "The built-in default scene (the survey's Figure 1).");
 }

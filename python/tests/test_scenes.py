@@ -74,3 +74,30 @@ def test_bad_building_blocks_are_value_errors():
         zs.Bounds.sphere((0, 0, 0), -1)
     with pytest.raises(ValueError, match="no objects"):
         scene.surface()
+
+
+def test_materials_take_patterns_and_reflection():
+    pattern = zs.Material(color=(x, 0.5, zs.mod(zs.floor(z), 2)), reflection=0.5)
+    red, green, blue = pattern.color
+    assert isinstance(red, zs.Expr) and blue(0, 0, 1.5) == 1
+    assert pattern.reflection == 0.5
+    plain = zs.Material(color=(0.1, 0.2, 0.3))
+    assert plain.color == (0.1, 0.2, 0.3)
+    with pytest.raises(ValueError, match="reflection"):
+        zs.Material(reflection=2)
+    with pytest.raises(ValueError, match="negative"):
+        zs.Material(color=(-1, 0, 0))
+    scene = zs.Scene()
+    scene.camera = zs.Camera(from_=(0.3, 6, 0.2), at=(0.3, 0, 0.2), up=(0, 0, 1))
+    scene.add_light(zs.Light.directional((0, -1, 0), shadows=False))
+    checker = zs.mod(zs.floor(x) + zs.floor(z), 2)
+    scene.add_object(y, bounds=zs.Bounds.none(),
+                     material=zs.Material(color=(0.2 + 0.6 * checker, 0.2, 0.2), specular=0))
+    rgb = zs.render(scene, 32, 24)
+    assert np.unique(np.round(rgb[:, :, 0].astype(float), 5)).tolist() == pytest.approx([0.2, 0.8])
+
+
+def test_the_clock_is_read_when_the_scene_is():
+    text = 'let r = 1 + clock\nobject "s" { surface x^2 + y^2 + z^2 - r^2 }\n'
+    assert zs.parse_scene(text).surface()(1, 0, 0) == 0
+    assert zs.parse_scene(text, clock=0.5).surface()(1.5, 0, 0) == 0

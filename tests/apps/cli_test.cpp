@@ -118,6 +118,29 @@ TEST_F(Cli, AnUnwritableOutputIsReportedBeforeRendering) {
     EXPECT_NE(taken.err.find("taken.png: is a directory"), std::string::npos) << taken.err;
 }
 
+TEST_F(Cli, FramesAreNumberedFilesWithTheClockRunningFromZeroToOne) {
+    write("roll.zs", "camera { from (0, 0, -6) }\n"
+                     "object \"b\" { surface (x - 2 * clock + 1)^2 + y^2 + z^2 - 0.25  bounds box((-2,-1,-1),(2,1,1)) }\n");
+    const Outcome r = run("render roll.zs -q --frames 3 -o roll.pfm --width 40 --height 30");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const zeroset::Image first = zeroset::read_pfm(dir_ / "roll_0000.pfm");
+    const zeroset::Image middle = zeroset::read_pfm(dir_ / "roll_0001.pfm");
+    const zeroset::Image last = zeroset::read_pfm(dir_ / "roll_0002.pfm");
+    EXPECT_EQ(file_count(), 4u);  // the scene and three frames
+    // The ball runs from x = -1 to x = 1: left of centre, centred, right of centre.
+    const auto lit = [](const zeroset::Image& image, int x) { return image.at(x, 15).x > image.at(0, 0).x + 0.01f; };
+    EXPECT_TRUE(lit(first, 13) && !lit(first, 27));
+    EXPECT_TRUE(lit(middle, 20) && !lit(middle, 13) && !lit(middle, 27));
+    EXPECT_TRUE(lit(last, 27) && !lit(last, 13));
+    const Outcome at = run("render roll.zs -q --clock 1 -o at.pfm --width 40 --height 30");
+    ASSERT_EQ(at.status, 0) << at.err;
+    EXPECT_EQ(zeroset::read_pfm(dir_ / "at.pfm").pixels, last.pixels);
+    for (const char* bad : {"--frames 0", "--frames 2 -o -", "--frames 2 --clock 0.5", "--clock abc"}) {
+        const Outcome e = run(std::string("render roll.zs ") + bad);
+        EXPECT_EQ(e.status, 2) << bad << ": " << e.err;
+    }
+}
+
 TEST_F(Cli, SyntaxErrorNamesFileLineColumnAndWritesNothing) {
     write("bad.zs", "camera { from (0, 0, -5) }\nobject { surface x^2 + * y }\n");
     const std::size_t before = file_count();

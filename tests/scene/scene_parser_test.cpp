@@ -133,7 +133,7 @@ TEST(SceneParser, UnknownAndRepeatedKeys) {
               "scene.zs:2:3: 'width' is already set in this image block (at line 1, column 9)");
     EXPECT_EQ(error_of("object { surface x  material { color (1, 1, 1)  colour (1, 0, 0) } }"),
               "scene.zs:1:49: unknown key 'colour' in the material block "
-              "(expected color, ambient, diffuse, specular or shininess)");
+              "(expected color, ambient, diffuse, specular, shininess or reflection)");
     EXPECT_EQ(error_of("object { surface x  surface y }"),
               "scene.zs:1:21: 'surface' is already set in this object block (at line 1, column 10)");
 }

@@ -112,6 +112,8 @@ std::vector<std::pair<std::string, int>> PreparedScene::method_counts() const {
 MaterialId PreparedScene::material_id(const std::optional<Material>& material) {
     if (!material) return no_material;
     materials_.push_back(*material);
+    color_patterns_.push_back(material->color_pattern ? std::make_shared<const ColorPatternTapes>(*material->color_pattern)
+                                                      : nullptr);
     return static_cast<MaterialId>(materials_.size() - 1);
 }
 

@@ -13,6 +13,7 @@
 
 #include "zeroset/accel/implicit_leaf.hpp"
 #include "zeroset/accel/primitive.hpp"
+#include "zeroset/render/color_pattern.hpp"
 #include "zeroset/scene/scene.hpp"
 
 namespace zeroset {
@@ -46,6 +47,11 @@ public:
     [[nodiscard]] const std::vector<const ImplicitLeaf*>& leaves() const { return leaves_; }
     /// The material of a hit (the default one for no_material).
     [[nodiscard]] const Material& material(MaterialId id) const;
+    /// The compiled colour pattern of each material (null where the colour
+    /// is constant), by MaterialId.
+    [[nodiscard]] const std::vector<std::shared_ptr<const ColorPatternTapes>>& color_patterns() const {
+        return color_patterns_;
+    }
     /// How many distinct objects each method traces ("plane" for half-spaces), in the order of all_methods().
     [[nodiscard]] std::vector<std::pair<std::string, int>> method_counts() const;
     /// The partitioned objects' octrees, e.g. "'bear' lipschitz octree: 8012 cells
@@ -69,6 +75,7 @@ private:
     ObjectOverrides overrides_;
     std::vector<Light> lights_;
     std::vector<Material> materials_;
+    std::vector<std::shared_ptr<const ColorPatternTapes>> color_patterns_;  // parallel to materials_
     Material default_material_;
     std::vector<const ImplicitLeaf*> leaves_;
     std::vector<const Blob*> blobs_;

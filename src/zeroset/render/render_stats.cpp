@@ -17,12 +17,13 @@ std::string count(std::uint64_t n) {
 std::string summary_line(const RenderStats& s) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer,
-                  "%dx%d, %d spp, %d thread%s: %.3f s (prepare %.3f s, trace %.3f s); %s rays (%s camera, %s shadow), "
+                  "%dx%d, %d spp, %d thread%s: %.3f s (prepare %.3f s, trace %.3f s); %s rays (%s camera, %s shadow%s), "
                   "%s hits; %s evaluations (%s point, %s interval, %s gradient)",
                   s.width, s.height, s.samples_per_pixel, s.threads, s.threads == 1 ? "" : "s", s.seconds,
                   s.prepare_seconds, s.seconds - s.prepare_seconds,
-                  count(s.camera_rays + s.shadow_rays).c_str(), count(s.camera_rays).c_str(),
-                  count(s.shadow_rays).c_str(), count(s.hits).c_str(),
+                  count(s.rays()).c_str(), count(s.camera_rays).c_str(), count(s.shadow_rays).c_str(),
+                  s.reflection_rays ? (", " + count(s.reflection_rays) + " reflection").c_str() : "",
+                  count(s.hits).c_str(),
                   count(s.counters.evaluations()).c_str(), count(s.counters.point_evaluations).c_str(),
                   count(s.counters.interval_evaluations).c_str(), count(s.counters.gradient_evaluations).c_str());
     std::string line = buffer;
@@ -35,13 +36,13 @@ std::string summary_line(const RenderStats& s) {
     }
     if (!s.partitions.empty()) {
         char cells[64];
-        const std::uint64_t rays = s.camera_rays + s.shadow_rays;
+        const std::uint64_t rays = s.rays();
         std::snprintf(cells, sizeof cells, "%.2f", rays ? static_cast<double>(s.counters.cell_visits) / static_cast<double>(rays) : 0.0);
         line += "; " + s.partitions + "; " + cells + " cells a ray";
     }
     if (!s.blobs.empty()) {
         char kernels[64];
-        const std::uint64_t rays = s.camera_rays + s.shadow_rays;
+        const std::uint64_t rays = s.rays();
         std::snprintf(kernels, sizeof kernels, "%.2f", rays ? static_cast<double>(s.counters.blob_kernels) / static_cast<double>(rays) : 0.0);
         line += "; " + s.blobs + "; " + kernels + " blob components a ray";
     }

@@ -19,6 +19,8 @@ struct RenderStats {
     double prepare_seconds = 0.0;  // of which preparing the scene (tapes, methods, BVHs)
     std::uint64_t camera_rays = 0;
     std::uint64_t shadow_rays = 0;
+    std::uint64_t reflection_rays = 0;
+    [[nodiscard]] std::uint64_t rays() const { return camera_rays + shadow_rays + reflection_rays; }
     std::uint64_t hits = 0;
     TraceCounters counters;
     /// The distinct objects (leaves) by the method that traces them;

@@ -105,7 +105,7 @@ void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera,
                 if (const auto hit = tracer.closest_hit(ray, far)) {
                     ++totals.stats.hits;
                     nearest.offer(*hit);
-                    sum += shade(tracer, ray, *hit, totals.shading);
+                    sum += shade(tracer, ray, *hit, totals.shading, scene.image.reflection_depth);
                 } else {
                     sum += scene.background;
                 }
@@ -228,6 +228,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
         stats.camera_rays += t.stats.camera_rays;
         stats.hits += t.stats.hits;
         stats.shadow_rays += t.shading.shadow_rays;
+        stats.reflection_rays += t.shading.reflection_rays;
         stats.counters += t.stats.counters;
         if (t.first_nan) throw RenderError(nan_message(*t.first_nan));
     }
@@ -237,7 +238,8 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
         const auto [px, py] = *t.non_finite_pixel;
         throw RenderError("pixel (" + std::to_string(px) + ", " + std::to_string(py) +
                           ") has no finite colour: light and material colours multiply past the largest float "
-                          "(3.4e38); scale them down");
+                          "(3.4e38), or a material's colour pattern is NaN or infinite there; scale the colours down "
+                          "or fix the pattern");
     }
     stats.width = settings.width;
     stats.height = settings.height;

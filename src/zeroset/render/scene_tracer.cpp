@@ -7,7 +7,20 @@
 namespace zeroset {
 
 SceneTracer::SceneTracer(const PreparedScene& prepared)
-    : prepared_(&prepared), scratch_(prepared.leaves().size()) {}
+    : prepared_(&prepared), scratch_(prepared.leaves().size()) {
+    for (const auto& pattern : prepared.color_patterns()) {
+        patterns_.emplace_back();
+        if (pattern) patterns_.back().emplace(*pattern);
+    }
+}
+
+Vec3d SceneTracer::albedo(const SurfaceHit& hit) {
+    if (hit.material != no_material) {
+        auto& pattern = patterns_[static_cast<std::size_t>(hit.material)];
+        if (pattern) return (*pattern)(hit.local_point);
+    }
+    return prepared_->material(hit.material).color;
+}
 
 /// The leaf's outward normal (flipped for a subtracted solid's surface),
 /// brought to the scene's space — and then turned to face the ray, since
@@ -27,7 +40,9 @@ Vec3d SceneTracer::normal_at(const SurfaceRef& surface, const Ray& ray) {
 std::optional<SurfaceHit> SceneTracer::closest_hit(const Ray& ray, double t_max) {
     const std::optional<Hit> hit = prepared_->root().first_hit(ray, 0.0, t_max, scratch_);
     if (!hit) return std::nullopt;
-    return SurfaceHit{hit->t, ray.at(hit->t), normal_at(hit->surface, ray), hit->surface.material, hit->surface.scale};
+    const Vec3d point = ray.at(hit->t);
+    return SurfaceHit{hit->t, point, hit->surface.to_local.transform_point(point), normal_at(hit->surface, ray),
+                      hit->surface.material, hit->surface.scale};
 }
 
 bool SceneTracer::occluded(const Ray& ray, double t_max) { return prepared_->root().occluded(ray, 0.0, t_max, scratch_); }

@@ -15,6 +15,7 @@ namespace zeroset {
 struct SurfaceHit {
     double t;
     Vec3d point;
+    Vec3d local_point;  // the same point in the object's own space (for colour patterns)
     Vec3d normal;  // unit, facing the ray's origin
     MaterialId material;
     double scale;  // the size of the object hit (its shrunk bounds' diagonal), in scene units
@@ -28,6 +29,8 @@ public:
     std::optional<SurfaceHit> closest_hit(const Ray& ray, double t_max);
     /// True when some surface lies on the ray in [0, t_max].
     bool occluded(const Ray& ray, double t_max);
+    /// The hit's diffuse colour: its material's, or its pattern's there.
+    Vec3d albedo(const SurfaceHit& hit);
 
     [[nodiscard]] const PreparedScene& prepared() const { return *prepared_; }
     [[nodiscard]] TraceCounters& counters() { return scratch_.counters; }
@@ -40,6 +43,7 @@ private:
 
     const PreparedScene* prepared_;
     TraceScratch scratch_;
+    std::vector<std::optional<ColorPatternEvaluator>> patterns_;  // by MaterialId, where there is a pattern
 };
 
 /// "the surface of object 'NAME' evaluates to NaN at (x, y, z) — …": the

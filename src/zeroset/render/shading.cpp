@@ -1,4 +1,5 @@
-// Blinn–Phong: ambient + Σ over visible lights (diffuse + specular).
+// Blinn–Phong: ambient + Σ over visible lights (diffuse + specular), plus
+// the mirror image for a reflective material, traced recursively.
 #include "zeroset/render/shading.hpp"
 
 #include <algorithm>
@@ -18,9 +19,10 @@ double shadow_offset(const SurfaceHit& hit) { return 1e-4 * hit.scale; }
 
 }  // namespace
 
-Vec3d shade(SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit, ShadingCounters& shading) {
+Vec3d shade(SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit, ShadingCounters& shading, int bounces_left) {
     const Material& m = tracer.prepared().material(hit.material);
-    Vec3d color = hadamard(tracer.prepared().scene().ambient, m.color) * m.ambient;
+    const Vec3d albedo = tracer.albedo(hit);
+    Vec3d color = hadamard(tracer.prepared().scene().ambient, albedo) * m.ambient;
     const Vec3d origin = hit.point + hit.normal * shadow_offset(hit);
     for (const Light& light : tracer.prepared().lights()) {
         Vec3d to_light;
@@ -46,7 +48,14 @@ Vec3d shade(SceneTracer& tracer, const Ray& ray, const SurfaceHit& hit, ShadingC
             const auto n = integer_value(m.shininess);  // the usual case: repeated squaring, not libm's pow
             specular = n ? powi(cosine, *n) : std::pow(cosine, m.shininess);
         }
-        color += hadamard(light.color, m.color * (m.diffuse * lambert) + Vec3d{1, 1, 1} * (m.specular * specular));
+        color += hadamard(light.color, albedo * (m.diffuse * lambert) + Vec3d{1, 1, 1} * (m.specular * specular));
+    }
+    if (m.reflection > 0.0 && bounces_left > 0) {
+        ++shading.reflection_rays;
+        const Ray mirror{origin, ray.dir - hit.normal * (2.0 * dot(ray.dir, hit.normal))};
+        const auto seen = tracer.closest_hit(mirror, std::numeric_limits<double>::infinity());
+        color += (seen ? shade(tracer, mirror, *seen, shading, bounces_left - 1) : tracer.prepared().scene().background) *
+                 m.reflection;
     }
     return color;
 }

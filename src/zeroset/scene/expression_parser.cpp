@@ -28,6 +28,9 @@ namespace {
 constexpr std::string_view model_function = "model";
 
 /// The names that stand for values: x, y, z and pi.
+/// The animation clock: a constant the scene is read with (render --frames).
+constexpr std::string_view clock_name = "clock";
+
 std::optional<Expr> builtin_value(std::string_view name) {
     if (name == "x") return var_x();
     if (name == "y") return var_y();
@@ -115,6 +118,7 @@ private:
     Value name(const Token& token) {
         const std::string_view text = token.text;
         if (const auto value = builtin_value(text)) return *value;
+        if (text == clock_name) return Expr(context_.clock);
         if (const Binding* binding = context_.scope.find(text)) return binding->value;
         if (is_builtin_function(text) || text == model_function || find_algebraic_surface(text))
             in_.fail(token.where, "'" + std::string(text) + "' is a function: call it as " + std::string(text) + "(...)");
@@ -147,7 +151,7 @@ private:
         if (name.text == model_function) return model(name);
         if (const AlgebraicSurface* surface = find_algebraic_surface(name.text)) return algebraic(name, *surface);
         if (!is_builtin_function(name.text)) {
-            const bool is_value = context_.scope.find(name.text) || builtin_value(name.text);
+            const bool is_value = context_.scope.find(name.text) || builtin_value(name.text) || name.text == clock_name;
             in_.fail(name.where, is_value ? "'" + std::string(name.text) + "' is not a function"
                                           : "unknown function '" + std::string(name.text) + "'");
         }
@@ -299,7 +303,7 @@ Value evaluate_expression_text(std::string_view text, const std::vector<std::pai
 }
 
 bool is_builtin_name(std::string_view name) {
-    return builtin_value(name) || name == model_function || is_builtin_function(name) ||
+    return builtin_value(name) || name == clock_name || name == model_function || is_builtin_function(name) ||
            find_algebraic_surface(name) != nullptr;
 }
 

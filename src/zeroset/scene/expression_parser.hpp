@@ -1,4 +1,4 @@
-// The expression half of the scene language: numbers, x, y, z, pi, names
+// The expression half of the scene language: numbers, x, y, z, pi, clock, names
 // bound by `let`, + - * / ^, function calls, model("file.vm") and vectors
 // (a, b, c). Expressions are built into Values while they are read, so an
 // unknown name, a wrong argument count or a vector where a number belongs
@@ -24,6 +24,7 @@ struct ExpressionContext {
     ModelLibrary& models;
     const std::filesystem::path& base_dir;  // model paths are relative to it
     int max_nesting;                        // SceneLimits::expression_nesting
+    double clock = 0.0;                     // the value of `clock`: an animation's time, 0 → 1
 };
 
 /// Reads one expression from `in`; stops at the first token that cannot continue it.
@@ -39,7 +40,7 @@ std::vector<std::string> function_names();
 Value evaluate_expression_text(std::string_view text, const std::vector<std::pair<std::string, Value>>& bindings,
                                const std::string& file_name, const std::filesystem::path& base_dir);
 
-/// True for the names the language defines itself (x, y, z, pi and the
+/// True for the names the language defines itself (x, y, z, pi, clock and the
 /// function names), which `let` may not bind.
 bool is_builtin_name(std::string_view name);
 

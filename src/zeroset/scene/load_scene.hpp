@@ -17,12 +17,13 @@ namespace zeroset {
 
 /// Reads and parses a scene file; its includes and models are found relative
 /// to it. A file that cannot be read is a SceneError with line 0
-/// ("file: cannot open the scene file: …").
-Scene load_scene(const std::filesystem::path& file, const SceneLimits& limits = {});
+/// ("file: cannot open the scene file: …"). The scene's `clock` reads
+/// `clock` (an animation's time, 0 → 1 over `render --frames`).
+Scene load_scene(const std::filesystem::path& file, const SceneLimits& limits = {}, double clock = 0.0);
 
 /// Parses scene text; errors name `file_name`, and relative include and
 /// model paths start at `base_dir`.
 Scene parse_scene(std::string_view text, const std::string& file_name, const std::filesystem::path& base_dir,
-                  const SceneLimits& limits = {});
+                  const SceneLimits& limits = {}, double clock = 0.0);
 
 }  // namespace zeroset

@@ -3,6 +3,7 @@
 // directly in C++; consumed by the renderer.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,13 +38,20 @@ struct Light {
     bool casts_shadows = true;
 };
 
-/// Blinn–Phong material.
+/// Blinn–Phong material, with an optional mirror reflection.
 struct Material {
     Vec3d color{0.8, 0.8, 0.8};  // diffuse albedo, linear RGB
+    /// When set, the colour instead: three expressions of the object's own
+    /// coordinates (a checker, stripes, a colour from a function's value),
+    /// evaluated at each hit; negative components count as 0.
+    std::optional<std::array<Expr, 3>> color_pattern;
     double ambient = 0.1;        // fraction of the scene's ambient light reflected
     double diffuse = 0.9;
     double specular = 0.3;
     double shininess = 40.0;     // Blinn–Phong exponent
+    /// The share of the mirror image added to the colour, in [0, 1] (as
+    /// POV-Ray's `reflection`): colour + reflection · what the mirrored ray sees.
+    double reflection = 0.0;
 };
 
 /// Bounds of an object that gives none: the box from (−10, −10, −10) to (10, 10, 10).
@@ -98,6 +106,8 @@ struct ImageSettings {
     int width = 640;
     int height = 480;
     int samples_per_pixel = 1;
+    /// How many mirror bounces a camera ray may take; a ray past them sees black.
+    int reflection_depth = 5;
 };
 
 struct Scene {

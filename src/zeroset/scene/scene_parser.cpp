@@ -18,14 +18,15 @@ namespace {
 constexpr std::array<std::string_view, 16> statement_names{
     "image", "camera", "light",        "background", "ambient",  "let",   "include", "object", "blob",
     "group", "union",  "intersection", "difference", "instance", "shape", "for"};
-constexpr std::array<std::string_view, 3> image_keys{"width", "height", "spp"};
+constexpr std::array<std::string_view, 4> image_keys{"width", "height", "spp", "reflection_depth"};
 constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};
 constexpr std::array<std::string_view, 4> light_keys{"from", "direction", "color", "shadows"};
-constexpr std::array<std::string_view, 5> material_keys{"color", "ambient", "diffuse", "specular", "shininess"};
+constexpr std::array<std::string_view, 6> material_keys{"color", "ambient", "diffuse", "specular", "shininess", "reflection"};
 
 constexpr int max_image_size = 65536;
 /// Files including files, at most this deep (the reading recurses).
 constexpr int max_samples_per_pixel = 1024;
+constexpr int max_reflection_depth = 64;
 
 bool contains(std::span<const std::string_view> names, std::string_view name) {
     return std::ranges::find(names, name) != names.end();
@@ -40,7 +41,7 @@ std::vector<std::string_view> method_names() {
 
 }  // namespace
 
-SceneParser::SceneParser(const SceneLimits& limits) : limits_(limits) {}
+SceneParser::SceneParser(const SceneLimits& limits, double clock) : limits_(limits), clock_(clock) {}
 SceneParser::~SceneParser() = default;
 
 void SceneParser::parse(std::string file_name, std::string text, const std::filesystem::path& base_dir,
@@ -113,8 +114,10 @@ void SceneParser::image(const Token& keyword) {
             image.width = count("width", max_image_size);
         } else if (key.text == "height") {
             image.height = count("height", max_image_size);
-        } else {
+        } else if (key.text == "spp") {
             image.samples_per_pixel = count("spp", max_samples_per_pixel);
+        } else {
+            image.reflection_depth = count("reflection_depth", max_reflection_depth, 0);
         }
     });
 }
@@ -216,7 +219,9 @@ Material SceneParser::material(const Token& keyword) {
     Material material;
     block(keyword, material_keys, [&](const Token& key) {
         if (key.text == "color") {
-            material.color = color("the material color");
+            material_color(material);
+        } else if (key.text == "reflection") {
+            material.reflection = fraction("reflection");
         } else if (key.text == "ambient") {
             material.ambient = non_negative("ambient");
         } else if (key.text == "diffuse") {
@@ -335,7 +340,7 @@ void SceneParser::once(std::optional<std::string>& first, const Token& keyword, 
 
 SceneParser::Located<Value> SceneParser::value() {
     const SourceLocation where = in_->peek().where;
-    return {parse_expression(*in_, {scope_, models_, dir_, limits_.expression_nesting}), where};
+    return {parse_expression(*in_, {scope_, models_, dir_, limits_.expression_nesting, clock_}), where};
 }
 
 SceneParser::Located<double> SceneParser::number(std::string_view what) {
@@ -354,17 +359,37 @@ double SceneParser::non_negative(std::string_view what) {
     return x;
 }
 
-Vec3d SceneParser::color(std::string_view what) {
-    const auto [c, where] = vector(what);
+Vec3d SceneParser::color(std::string_view what) { return color_of(value(), what); }
+
+Vec3d SceneParser::color_of(const Located<Value>& v, std::string_view what) {
+    const Vec3d c = constant_vector(*in_, v.value, v.where, what);
+    const SourceLocation where = v.where;
     if (c.x < 0.0 || c.y < 0.0 || c.z < 0.0)
         in_->fail(where, std::string(what) + " must not have negative components, but it is " + format_vector(c));
     return c;
 }
 
-int SceneParser::count(std::string_view what, int max) {
+double SceneParser::fraction(std::string_view what) {
+    const auto [x, where] = number(what);
+    if (!(x >= 0.0 && x <= 1.0))
+        in_->fail(where, std::string(what) + " must be between 0 and 1, but it is " + format_number(x));
+    return x;
+}
+
+void SceneParser::material_color(Material& material) {
+    const Located<Value> v = value();
+    if (v.value.is_vector() && !variables_of(v.value.vector()).empty())
+        material.color_pattern = v.value.vector();
+    else
+        material.color = color_of(v, "the material color");
+}
+
+int SceneParser::count(std::string_view what, int max, int least) {
     const auto [n, where] = number(what);
-    if (n < 1.0 || n != std::floor(n))
-        in_->fail(where, std::string(what) + " must be a positive integer, but it is " + format_number(n));
+    if (n < least || n != std::floor(n))
+        in_->fail(where, std::string(what) +
+                             (least == 1 ? " must be a positive integer" : " must be a whole number, at least " + std::to_string(least)) +
+                             ", but it is " + format_number(n));
     if (n > max)
         in_->fail(where, std::string(what) + " must be at most " + std::to_string(max) + ", but it is " +
                              format_number(n));

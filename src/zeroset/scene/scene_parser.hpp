@@ -58,7 +58,8 @@ struct ShapeDefinition {
 
 class SceneParser {
 public:
-    explicit SceneParser(const SceneLimits& limits = {});
+    /// `clock` is the value the scene's `clock` reads (an animation's time).
+    explicit SceneParser(const SceneLimits& limits = {}, double clock = 0.0);
     ~SceneParser();
     SceneParser(const SceneParser&) = delete;
     SceneParser& operator=(const SceneParser&) = delete;
@@ -110,7 +111,13 @@ private:
     Located<Vec3d> vector(std::string_view what);
     double non_negative(std::string_view what);
     Vec3d color(std::string_view what);
-    int count(std::string_view what, int max);
+    Vec3d color_of(const Located<Value>& v, std::string_view what);
+    /// A number in [0, 1].
+    double fraction(std::string_view what);
+    /// A material's `color`: a constant vector, or one of expressions in x, y, z (a pattern).
+    void material_color(Material& material);
+    /// A whole number in [least, max].
+    int count(std::string_view what, int max, int least = 1);
     bool on_off(std::string_view what);
 
     // scene_nodes.cpp: the tree.
@@ -181,6 +188,7 @@ private:
     long long iterations_ = 0;   // loop iterations read so far
     long long objects_ = 0;      // objects made so far
     SceneLimits limits_;
+    double clock_ = 0.0;
 };
 
 }  // namespace zeroset
