@@ -4,7 +4,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace zeroset::cli {
 
@@ -19,7 +21,9 @@ std::string image_output_help(const std::string& default_name) {
            "  --format F          png, ppm, pfm or exr: the format for '-o -' (default png)\n";
 }
 
-ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& default_name, bool numbered) {
+ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& default_name, int frames) {
+    const bool numbered = frames > 1;
+    if (numbered) digits_ = std::max<int>(4, static_cast<int>(std::to_string(frames - 1).size()));
     if (options.value("-o") && options.value("--output")) throw UsageError("give -o or --output, not both");
     const std::string given = options.value("-o").value_or(options.value("--output").value_or(""));
     std::optional<ImageFormat> named;
@@ -39,13 +43,17 @@ ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& de
     if (named && *named != format_)
         throw UsageError("--format does not match the extension of " + path_.string() +
                          " (--format is for '-o -'; the extension names a file's format)");
-    check_image_output(path_of(numbered ? 0 : -1));
+    check(numbered ? 0 : -1);
+}
+
+void ImageOutput::check(int frame) const {
+    if (!path_.empty()) check_image_output(path_of(frame));
 }
 
 std::filesystem::path ImageOutput::path_of(int frame) const {
     if (frame < 0) return path_;
-    char number[16];
-    std::snprintf(number, sizeof number, "_%04d", frame);
+    char number[24];
+    std::snprintf(number, sizeof number, "_%0*d", digits_, frame);
     return path_.parent_path() / (path_.stem().string() + number + path_.extension().string());
 }
 

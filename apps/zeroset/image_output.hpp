@@ -22,15 +22,17 @@ std::string image_output_help(const std::string& default_name);
 class ImageOutput {
 public:
     /// Reads -o/--output and --format; `default_name` when -o is absent.
-    /// `numbered`: a sequence of frames, each file's name numbered (not to
-    /// standard output). Throws UsageError for a bad name or format,
-    /// ImageWriteError when the (first) file could not be written.
-    ImageOutput(const Options& options, const std::filesystem::path& default_name, bool numbered = false);
+    /// With `frames` > 1, a sequence: each frame's file name is numbered (and
+    /// standard output is refused). Throws UsageError for a bad name or
+    /// format, ImageWriteError when the (first) file could not be written.
+    ImageOutput(const Options& options, const std::filesystem::path& default_name, int frames = 1);
 
     [[nodiscard]] ImageFormat format() const { return format_; }
     /// The file name — with `_0042` before the extension for frame 42 of a
-    /// numbered output — or "<stdout>".
+    /// sequence (more digits past 9 999 frames) — or "<stdout>".
     [[nodiscard]] std::string name(int frame = -1) const;
+    /// Throws ImageWriteError unless the frame's file could be written now.
+    void check(int frame) const;
     void write(const Image& image, int frame = -1) const;
 
 private:
@@ -38,6 +40,7 @@ private:
 
     std::filesystem::path path_;  // empty for standard output
     ImageFormat format_;
+    int digits_ = 0;  // of a frame number; 0 when the output is one image
 };
 
 }  // namespace zeroset::cli

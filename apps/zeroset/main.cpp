@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "interrupts.hpp"
 #include "options.hpp"
+#include "zeroset/scene/wording.hpp"
 
 namespace {
 
@@ -45,7 +46,9 @@ int main(int argc, char** argv) {
         if (args[0] == "basins") return zeroset::cli::basins_command(rest);
         if (args[0] == "ray") return zeroset::cli::ray_command(rest);
         if (args[0] == "slice") return zeroset::cli::slice_command(rest);
-        throw zeroset::cli::UsageError("unknown command '" + args[0] + "' (try zeroset --help)");
+        constexpr std::string_view commands[] = {"render", "basins", "ray", "slice"};
+        throw zeroset::cli::UsageError("unknown command '" + args[0] + "'" + zeroset::did_you_mean(args[0], commands) +
+                                       " (try zeroset --help)");
     } catch (const zeroset::cli::UsageError& e) {
         std::fprintf(stderr, "zeroset: %s\n", e.what());
         return 2;

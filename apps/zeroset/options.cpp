@@ -35,7 +35,9 @@ Options::Options(const std::vector<std::string>& args, const std::vector<std::st
                 throw UsageError("option " + arg + " is given twice");
             values_.emplace_back(arg, value);
         } else {
-            throw UsageError("unknown option " + arg);
+            std::vector<std::string_view> known(valued.begin(), valued.end());
+            known.insert(known.end(), flags.begin(), flags.end());
+            throw UsageError("unknown option " + arg + did_you_mean(arg, known));
         }
     }
 }

@@ -4,9 +4,12 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "zeroset/scene/wording.hpp"
 
 namespace zeroset::cli {
 
@@ -29,6 +32,19 @@ public:
     /// The option's value as a count (a whole number ≥ 0 up to 2^64 − 1), or nothing when absent.
     [[nodiscard]] std::optional<std::uint64_t> count(const std::string& name) const;
     [[nodiscard]] const std::vector<std::string>& positional() const { return positional_; }
+
+    /// The option's value as one of a family (a method, a solver…), or
+    /// nothing when absent; another name is a UsageError that lists the
+    /// family and suggests the nearest.
+    template <class Member, class NameOf>
+    [[nodiscard]] std::optional<Member> choice(const std::string& name, std::string_view what,
+                                               std::span<const Member> members, NameOf name_of) const {
+        const auto given = value(name);
+        if (!given) return std::nullopt;
+        for (const Member& m : members)
+            if (name_of(m) == *given) return m;
+        throw UsageError(unknown_choice(what, *given, names_of(members, name_of)));
+    }
 
 private:
     std::vector<std::pair<std::string, std::string>> values_;

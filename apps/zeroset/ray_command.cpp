@@ -67,10 +67,8 @@ and the all-hits query. See docs/ray-command.md for the formats.
 
 /// The methods to run: all (auto first, as all_methods() lists them) or one.
 std::vector<Method> chosen_methods(const Options& options) {
-    const std::string name = options.value("--method").value_or("all");
-    if (name == "all") return {all_methods().begin(), all_methods().end()};
-    if (const auto m = method_from_name(name)) return {*m};
-    throw UsageError("unknown method '" + name + "' (try zeroset ray --help)");
+    if (options.value("--method").value_or("all") == "all") return {all_methods().begin(), all_methods().end()};
+    return {*options.choice("--method", "method", all_methods(), method_name)};
 }
 
 /// The rays to cast: from --rays, or --origin/--dir (the survey's ray for the default scene).

@@ -75,22 +75,10 @@ RenderSettings settings_for(const Options& options, const Scene& scene, bool lay
     settings.samples_per_pixel = options.integer("--spp").value_or(scene.image.samples_per_pixel);
     settings.threads = options.integer("--threads").value_or(0);
     settings.layers = layers;
-    if (const auto name = options.value("--method")) {
-        settings.method = method_from_name(*name);
-        if (!settings.method) throw UsageError("unknown method '" + *name + "' (try zeroset render --help)");
-    }
-    if (const auto name = options.value("--solver")) {
-        settings.solver = polynomial_solver_from_name(*name);
-        if (!settings.solver) throw UsageError("unknown polynomial solver '" + *name + "' (try zeroset render --help)");
-    }
-    if (const auto name = options.value("--normals")) {
-        settings.normals = normal_mode_from_name(*name);
-        if (!settings.normals) throw UsageError("unknown normal mode '" + *name + "' (try zeroset render --help)");
-    }
-    if (const auto name = options.value("--partition")) {
-        settings.partition = partition_from_name(*name);
-        if (!settings.partition) throw UsageError("unknown partition '" + *name + "' (try zeroset render --help)");
-    }
+    settings.method = options.choice("--method", "method", all_methods(), method_name);
+    settings.solver = options.choice("--solver", "polynomial solver", all_polynomial_solvers(), polynomial_solver_name);
+    settings.normals = options.choice("--normals", "normal mode", all_normal_modes(), normal_mode_name);
+    settings.partition = options.choice("--partition", "partition", all_partitions(), partition_name);
     settings.max_evaluations = options.count("--max-evaluations");
     validate(settings);
     return settings;
@@ -131,12 +119,16 @@ int render_command(const std::vector<std::string>& args) {
     const std::optional<std::filesystem::path> scene_file =
         options.positional().empty() ? std::nullopt : std::optional(std::filesystem::path(options.positional()[0]));
     const std::vector<double> clocks = frame_clocks(options);
+    if (!scene_file && (options.value("--clock") || options.value("--frames")))
+        throw UsageError("--clock and --frames animate a scene file; the built-in scene has no clock");
     const ImageOutput output(options, scene_file ? scene_file->stem().string() + ".png" : "zeroset.png",
-                             clocks.size() > 1);
+                             static_cast<int>(clocks.size()));
     const bool quiet = options.has("-q") || options.has("--quiet");
     const bool layers = output.format() == ImageFormat::Exr;
 
     for (std::size_t frame = 0; frame < clocks.size(); ++frame) {
+        const int number = clocks.size() > 1 ? static_cast<int>(frame) : -1;
+        if (frame > 0) output.check(number);
         const Scene scene = load(scene_file, clocks[frame]);
         RenderSettings settings = settings_for(options, scene, layers);
         ProgressBar bar;
@@ -153,7 +145,6 @@ int render_command(const std::vector<std::string>& args) {
             }
         }();
         bar.finish();
-        const int number = clocks.size() > 1 ? static_cast<int>(frame) : -1;
         output.write(result.image, number);
         if (!quiet)
             std::fprintf(stderr, "zeroset: wrote %s — %s\n", output.name(number).c_str(),

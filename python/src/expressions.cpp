@@ -43,8 +43,17 @@ py::object call_function(const std::string& name, const py::args& args) {
     }
 }
 
+/// An integer exponent of at most 1024 in size is exact repeated
+/// multiplication, as `^` is in the scene language; any other is pow().
 Expr power(const Expr& base, const py::object& exponent) {
-    if (py::isinstance<py::int_>(exponent)) return powi(base, exponent.cast<int>());
+    constexpr long long exact = 1024;
+    if (PyIndex_Check(exponent.ptr())) {
+        const auto index = py::reinterpret_steal<py::object>(PyNumber_Index(exponent.ptr()));
+        if (!index) throw py::error_already_set();
+        int overflow = 0;
+        const long long n = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+        if (!overflow && n >= -exact && n <= exact) return powi(base, static_cast<int>(n));
+    }
     return pow(base, to_value(exponent, "the exponent").number());
 }
 
@@ -72,7 +81,8 @@ void bind_expressions(py::module_& m) {
         .def("__rmul__", [](const Expr& a, double b) { return Expr(b) * a; }, py::is_operator())
         .def("__truediv__", [](const Expr& a, const Expr& b) { return a / b; }, py::is_operator())
         .def("__rtruediv__", [](const Expr& a, double b) { return Expr(b) / a; }, py::is_operator())
-        .def("__pow__", &power, py::is_operator(), "An int exponent is exact repeated multiplication; others are pow().")
+        .def("__pow__", &power, py::is_operator(),
+             "An integer exponent up to 1024 in size is exact repeated multiplication; others are pow().")
         .def("__rpow__", [](const Expr& a, double b) { return pow(Expr(b), a); }, py::is_operator())
         .def("__neg__", [](const Expr& a) { return -a; })
         .def("__pos__", [](const Expr& a) { return a; })
@@ -101,15 +111,21 @@ void bind_expressions(py::module_& m) {
         "parse",
         [](const std::string& text, const py::kwargs& names) {
             std::vector<std::pair<std::string, Value>> bindings;
+            double clock = 0.0;
             for (const auto& [key, item] : names) {
                 const std::string name = key.cast<std::string>();
+                if (name == "clock") {
+                    clock = item.cast<double>();
+                    continue;
+                }
                 bindings.emplace_back(name, to_value(item, "'" + name + "'"));
             }
-            return from_value(evaluate_expression_text(text, bindings, "<expression>", std::filesystem::current_path()));
+            return from_value(
+                evaluate_expression_text(text, bindings, "<expression>", std::filesystem::current_path(), clock));
         },
         py::arg("text"),
-        "A scene-language expression, e.g. parse('sd_torus(1, r)', r=0.25); keyword arguments are names it may use. "
-        "A mistake raises SceneError with its line and column in the text.");
+        "A scene-language expression, e.g. parse('sd_torus(1, r)', r=0.25); keyword arguments are names it may use, "
+        "and clock= the value of `clock` (0 by default). A mistake raises SceneError with its line and column.");
     m.def(
         "load_vm",
         [](const std::string& path) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "values.hpp"
 #include "vec3_caster.hpp"
 #include "zeroset/io/image_writer.hpp"
 #include "zeroset/render/ray_probe.hpp"
@@ -54,14 +55,14 @@ py::object render_scene(const Scene& scene, std::optional<int> width, std::optio
     settings.samples_per_pixel = spp.value_or(scene.image.samples_per_pixel);
     settings.threads = threads;
     settings.layers = layers;
-    if (method) {
-        settings.method = method_from_name(*method);
-        if (!settings.method) throw py::value_error("unknown method '" + *method + "'");
-    }
+    if (method) settings.method = named(*method, "method", all_methods(), method_name);
+    // A copy (shallow: the nodes are shared and immutable), since another
+    // Python thread may change the scene while this one renders.
+    const Scene copy = scene;
     RenderResult result;
     {
         const py::gil_scoped_release unlocked;
-        result = render(scene, settings);
+        result = render(copy, settings);
     }
     const Image& image = result.image;
     py::array_t<float> rgb = rgb_array(image.pixels, image.width, image.height);
@@ -103,10 +104,8 @@ py::object probe(const std::optional<Scene>& given, std::optional<Vec3d> origin,
     std::vector<Method> methods;
     if (method == "all") {
         methods.assign(all_methods().begin(), all_methods().end());
-    } else if (const auto m = method_from_name(method)) {
-        methods.push_back(*m);
     } else {
-        throw py::value_error("unknown method '" + method + "' (give 'all' or a method's name)");
+        methods.push_back(named(method, "method", all_methods(), method_name));
     }
     const PlacedObject placed = find_placed_object(scene, object);
     std::string json;
@@ -124,7 +123,8 @@ py::object probe(const std::optional<Scene>& given, std::optional<Vec3d> origin,
 Image image_from(const py::array_t<float, py::array::c_style | py::array::forcecast>& rgb,
                  const std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>>& depth,
                  const std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>>& normals) {
-    if (rgb.ndim() != 3 || rgb.shape(2) != 3) throw py::value_error("rgb must have the shape (height, width, 3)");
+    if (rgb.ndim() != 3 || rgb.shape(2) != 3 || rgb.shape(0) == 0 || rgb.shape(1) == 0)
+        throw py::value_error("rgb must have the shape (height, width, 3), both sides at least 1");
     const auto height = static_cast<int>(rgb.shape(0)), width = static_cast<int>(rgb.shape(1));
     Image image(width, height);
     copy_triples(rgb.data(), image.pixels);

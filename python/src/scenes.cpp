@@ -3,6 +3,7 @@
 // with the same defaults as the scene language.
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -12,16 +13,11 @@
 #include "values.hpp"
 #include "vec3_caster.hpp"
 #include "zeroset/scene/load_scene.hpp"
+#include "zeroset/scene/wording.hpp"
 
 namespace zeroset::python {
 
 namespace {
-
-template <class T, class FromName>
-T named(const std::string& name, FromName from_name, const char* what) {
-    if (const auto value = from_name(name)) return *value;
-    throw py::value_error("unknown " + std::string(what) + " '" + name + "'");
-}
 
 /// scale, then rotate (degrees about x, then y, then z), then translate —
 /// the order a placement is usually thought of in.
@@ -40,13 +36,30 @@ Mat4 placement(const std::optional<py::object>& scale, const std::optional<Vec3d
     return m;
 }
 
+/// `value` when lo ≤ value ≤ hi (the scene language's rules); ValueError otherwise.
+double checked(double value, double lo, double hi, const char* what) {
+    if (!(value >= lo && value <= hi))
+        throw py::value_error(std::string(what) + " must be between " + format_number(lo) + " and " + format_number(hi) +
+                              ", not " + format_number(value));
+    return value;
+}
+
+/// A member of a material that must be in [lo, hi], read and written from Python.
+template <double Material::*member>
+void material_number(py::class_<Material>& c, const char* name, double lo, double hi) {
+    c.def_property(
+        name, [](const Material& m) { return m.*member; },
+        [name, lo, hi](Material& m, double v) { m.*member = checked(v, lo, hi, name); });
+}
+
 /// A constant colour, or — when a component depends on x, y or z — a pattern.
 void set_color(Material& material, const py::object& color) {
     const Value v = to_value(color, "the material color");
     if (!v.is_vector()) throw py::type_error("the material color must be three numbers or Exprs");
     if (variables_of(v.vector()).empty()) {
         const Vec3d c{v.vector()[0].value(), v.vector()[1].value(), v.vector()[2].value()};
-        if (c.x < 0.0 || c.y < 0.0 || c.z < 0.0) throw py::value_error("the material color must not be negative");
+        if (!(c.x >= 0.0 && c.y >= 0.0 && c.z >= 0.0 && c.x <= HUGE_VAL && c.y <= HUGE_VAL && c.z <= HUGE_VAL))
+            throw py::value_error("the material color must not be negative or NaN");
         material.color = c;
         material.color_pattern.reset();
     } else {
@@ -71,8 +84,8 @@ void add_object(Scene& scene, const Expr& surface, const std::string& name, cons
     Object object;
     object.surface = surface;
     object.bounds = bounds_from(bounds);
-    object.method = named<Method>(method, method_from_name, "method");
-    object.normals = named<NormalMode>(normals, normal_mode_from_name, "normal mode");
+    object.method = named(method, "method", all_methods(), method_name);
+    object.normals = named(normals, "normal mode", all_normal_modes(), normal_mode_name);
     auto node = std::make_shared<SceneNode>(*make_object_node(object, name, material));
     node->transform = placement(scale, rotate, translate);
     scene.nodes.push_back(std::move(node));
@@ -110,19 +123,18 @@ void bind_scenes(py::module_& m) {
         .def_readwrite("shadows", &Light::casts_shadows);
 
     const Material plain;
-    py::class_<Material>(m, "Material",
+    py::class_<Material> material_class(m, "Material",
                          "Blinn–Phong with a mirror share: color (linear RGB, or three Exprs of the object's own "
-                         "coordinates for a pattern), ambient, diffuse, specular, shininess, reflection.")
-        .def(py::init([](const py::object& color, double ambient, double diffuse, double specular, double shininess,
+                         "coordinates for a pattern), ambient, diffuse, specular, shininess, reflection.");
+    material_class.def(py::init([](const py::object& color, double ambient, double diffuse, double specular, double shininess,
                          double reflection) {
                  Material material;
                  set_color(material, color);
-                 material.ambient = ambient;
-                 material.diffuse = diffuse;
-                 material.specular = specular;
-                 material.shininess = shininess;
-                 if (!(reflection >= 0.0 && reflection <= 1.0)) throw py::value_error("reflection must be in [0, 1]");
-                 material.reflection = reflection;
+                 material.ambient = checked(ambient, 0.0, HUGE_VAL, "ambient");
+                 material.diffuse = checked(diffuse, 0.0, HUGE_VAL, "diffuse");
+                 material.specular = checked(specular, 0.0, HUGE_VAL, "specular");
+                 material.shininess = checked(shininess, 0.0, HUGE_VAL, "shininess");
+                 material.reflection = checked(reflection, 0.0, 1.0, "reflection");
                  return material;
              }),
              py::arg("color") = plain.color, py::arg("ambient") = plain.ambient, py::arg("diffuse") = plain.diffuse,
@@ -135,12 +147,12 @@ void bind_scenes(py::module_& m) {
                 const auto& p = *material.color_pattern;
                 return py::make_tuple(p[0], p[1], p[2]);
             },
-            &set_color)
-        .def_readwrite("ambient", &Material::ambient)
-        .def_readwrite("diffuse", &Material::diffuse)
-        .def_readwrite("specular", &Material::specular)
-        .def_readwrite("shininess", &Material::shininess)
-        .def_readwrite("reflection", &Material::reflection);
+            &set_color);
+    material_number<&Material::ambient>(material_class, "ambient", 0.0, HUGE_VAL);
+    material_number<&Material::diffuse>(material_class, "diffuse", 0.0, HUGE_VAL);
+    material_number<&Material::specular>(material_class, "specular", 0.0, HUGE_VAL);
+    material_number<&Material::shininess>(material_class, "shininess", 0.0, HUGE_VAL);
+    material_number<&Material::reflection>(material_class, "reflection", 0.0, 1.0);
 
     py::class_<Bounds>(m, "Bounds", "Where an object's surface lies: a box, a sphere, or none (a half-space, say).")
         .def_static("box", [](Vec3d lo, Vec3d hi) { return bounds_from(py::make_tuple(lo, hi)); }, py::arg("lo"),
@@ -168,8 +180,7 @@ void bind_scenes(py::module_& m) {
         .def_property(
             "reflection_depth", [](const Scene& s) { return s.image.reflection_depth; },
             [](Scene& s, int n) {
-                if (n < 0) throw py::value_error("reflection_depth must not be negative");
-                s.image.reflection_depth = n;
+                s.image.reflection_depth = static_cast<int>(checked(n, 0, max_reflection_depth, "reflection_depth"));
             })
         .def_property(
             "spp", [](const Scene& s) { return s.image.samples_per_pixel; },

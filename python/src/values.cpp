@@ -5,8 +5,13 @@ namespace zeroset::python {
 
 Value to_value(py::handle item, const std::string& what) {
     if (py::isinstance<Expr>(item)) return item.cast<Expr>();
-    if (py::isinstance<py::float_>(item) || py::isinstance<py::int_>(item)) return Expr(item.cast<double>());
-    if (py::isinstance<py::sequence>(item) && !py::isinstance<py::str>(item)) {
+    const bool sequence = py::isinstance<py::sequence>(item) && !py::isinstance<py::str>(item);
+    if (!sequence && PyNumber_Check(item.ptr())) {  // Python's numbers and numpy's scalars alike
+        const double number = PyFloat_AsDouble(item.ptr());
+        if (number == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+        return Expr(number);
+    }
+    if (sequence) {
         const auto items = py::reinterpret_borrow<py::sequence>(item);
         if (items.size() == 3) {
             ExprVector v;

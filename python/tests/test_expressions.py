@@ -23,6 +23,14 @@ def test_operators_build_the_function_python_reads():
     assert (zs.Expr(2) * 3 + zs.sin(zs.Expr(1))).is_constant and not f.is_constant
 
 
+def test_numpy_numbers_and_huge_powers_are_numbers():
+    assert zs.sd_sphere(np.int64(1))(2, 0, 0) == pytest.approx(1.0)
+    assert zs.Material(color=np.array([0.1, 0.2, 0.3], dtype=np.float32)).color == pytest.approx((0.1, 0.2, 0.3))
+    assert (x ** np.int32(3))(2, 0, 0) == 8
+    assert (x ** (2**40))(1, 0, 0) == 1  # past 1024: pow, not repeated multiplication
+    assert zs.parse("1 + clock", clock=0.25)(0, 0, 0) == 1.25
+
+
 def test_arrays_broadcast_like_numpy():
     f = x**2 + y**2 + z**2 - 1
     xs = np.linspace(-2, 2, 5)

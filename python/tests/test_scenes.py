@@ -87,6 +87,12 @@ def test_materials_take_patterns_and_reflection():
         zs.Material(reflection=2)
     with pytest.raises(ValueError, match="negative"):
         zs.Material(color=(-1, 0, 0))
+    with pytest.raises(ValueError, match="NaN"):
+        zs.Material(color=(float("nan"), 0, 0))
+    with pytest.raises(ValueError, match="reflection must be between 0 and 1"):
+        plain.reflection = 5
+    with pytest.raises(ValueError, match="ambient must be between"):
+        plain.ambient = -1
     scene = zs.Scene()
     scene.camera = zs.Camera(from_=(0.3, 6, 0.2), at=(0.3, 0, 0.2), up=(0, 0, 1))
     scene.add_light(zs.Light.directional((0, -1, 0), shadows=False))

@@ -47,6 +47,13 @@ TEST_F(Cli, HelpListsCommandsAndOptions) {
     const Outcome bad = run("frobnicate");
     EXPECT_EQ(bad.status, 2);
     EXPECT_NE(bad.err.find("unknown command"), std::string::npos) << bad.err;
+    EXPECT_NE(run("rendr").err.find("did you mean 'render'?"), std::string::npos);
+    const Outcome option = run("render --widht 10");
+    EXPECT_EQ(option.status, 2);
+    EXPECT_NE(option.err.find("unknown option --widht; did you mean '--width'?"), std::string::npos) << option.err;
+    const Outcome method = run("render --method intervall");
+    EXPECT_EQ(method.status, 2);
+    EXPECT_NE(method.err.find("did you mean 'interval'?"), std::string::npos) << method.err;
 }
 
 TEST_F(Cli, RendersTheDefaultScene) {
@@ -135,10 +142,18 @@ TEST_F(Cli, FramesAreNumberedFilesWithTheClockRunningFromZeroToOne) {
     const Outcome at = run("render roll.zs -q --clock 1 -o at.pfm --width 40 --height 30");
     ASSERT_EQ(at.status, 0) << at.err;
     EXPECT_EQ(zeroset::read_pfm(dir_ / "at.pfm").pixels, last.pixels);
-    for (const char* bad : {"--frames 0", "--frames 2 -o -", "--frames 2 --clock 0.5", "--clock abc"}) {
-        const Outcome e = run(std::string("render roll.zs ") + bad);
+    for (const char* bad : {"roll.zs --frames 0", "roll.zs --frames 2 -o -", "roll.zs --frames 2 --clock 0.5",
+                            "roll.zs --clock abc", "--frames 2"}) {
+        const Outcome e = run(std::string("render ") + bad);
         EXPECT_EQ(e.status, 2) << bad << ": " << e.err;
     }
+    // Each frame's file is checked before that frame is rendered.
+    fs::create_directory(dir_ / "stuck_0001.png");
+    const Outcome stuck = run("render roll.zs -q --frames 3 -o stuck.png --width 8 --height 6");
+    EXPECT_EQ(stuck.status, 1);
+    EXPECT_NE(stuck.err.find("stuck_0001.png: is a directory"), std::string::npos) << stuck.err;
+    EXPECT_TRUE(fs::exists(dir_ / "stuck_0000.png"));
+    EXPECT_FALSE(fs::exists(dir_ / "stuck_0002.png"));
 }
 
 TEST_F(Cli, SyntaxErrorNamesFileLineColumnAndWritesNothing) {

@@ -105,6 +105,9 @@ TEST(Reflection, FacingMirrorsStopAtTheDepth) {
     const RenderResult r = render(scene, small());
     EXPECT_GT(r.stats.reflection_rays, r.stats.camera_rays);
     EXPECT_LE(r.stats.reflection_rays, 7 * r.stats.camera_rays);
+    Scene deep = scene;
+    deep.image.reflection_depth = max_reflection_depth + 1;  // built in C++: the renderer still refuses it
+    EXPECT_THROW(render(deep, small()), RenderError);
 }
 
 }  // namespace

@@ -98,7 +98,16 @@ TEST(Expression, UnknownIdentifier) {
 }
 
 TEST(Expression, UnknownFunctionAndNonFunctions) {
-    EXPECT_EQ(error_of("object { surface tanh(x) }"), "scene.zs:1:18: unknown function 'tanh'");
+    const std::string tanh = error_of("object { surface tanh(x) }");
+    EXPECT_TRUE(tanh.starts_with("scene.zs:1:18: unknown function 'tanh'; did you mean 'tan'? (the functions are sqrt, "))
+        << tanh;
+    EXPECT_TRUE(tanh.ends_with(", monomial and model)")) << tanh;
+    EXPECT_NE(tanh.find(" sd_torus, "), std::string::npos) << tanh;
+    const std::string far = error_of("object { surface frobnicate(x) }");
+    EXPECT_TRUE(far.starts_with("scene.zs:1:18: unknown function 'frobnicate' (the functions are ")) << far;
+    EXPECT_EQ(error_of("let radius = 1\nobject { surface x - radius2 }"),
+              "scene.zs:2:22: unknown identifier 'radius2'; did you mean 'radius'?");
+    EXPECT_EQ(error_of("object { surface X }"), "scene.zs:1:18: unknown identifier 'X'; did you mean 'x'?");
     EXPECT_EQ(error_of("let f = x\nobject { surface f(1) }"), "scene.zs:2:18: 'f' is not a function");
     EXPECT_EQ(error_of("object { surface x(1) }"), "scene.zs:1:18: 'x' is not a function");
     EXPECT_EQ(error_of("object { surface sqrt + 1 }"), "scene.zs:1:18: 'sqrt' is a function: call it as sqrt(...)");

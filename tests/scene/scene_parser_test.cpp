@@ -133,7 +133,13 @@ TEST(SceneParser, UnknownAndRepeatedKeys) {
               "scene.zs:2:3: 'width' is already set in this image block (at line 1, column 9)");
     EXPECT_EQ(error_of("object { surface x  material { color (1, 1, 1)  colour (1, 0, 0) } }"),
               "scene.zs:1:49: unknown key 'colour' in the material block "
-              "(expected color, ambient, diffuse, specular, shininess or reflection)");
+              "(expected color, ambient, diffuse, specular, shininess or reflection); did you mean 'color'?");
+    EXPECT_EQ(error_of("object { surface x  methd interval }"),
+              "scene.zs:1:21: unknown key 'methd' in the object block (expected surface, bounds, method, "
+              "solver, normals, partition, material, translate, rotate, scale, shear or matrix); did you mean 'method'?");
+    EXPECT_EQ(error_of("object { surface x  method intervall }"),
+              "scene.zs:1:28: unknown method 'intervall' (expected auto, sphere, interval, lg, polynomial, newton, "
+              "regula_falsi or bisection); did you mean 'interval'?");
     EXPECT_EQ(error_of("object { surface x  surface y }"),
               "scene.zs:1:21: 'surface' is already set in this object block (at line 1, column 10)");
 }

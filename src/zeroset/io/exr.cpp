@@ -111,12 +111,11 @@ Image decode_exr(std::span<const std::uint8_t> bytes) {
         const bool layers = channels.findChannel("Z") && std::all_of(std::begin(normal_channels), std::end(normal_channels),
                                                                      [&](const char* n) { return channels.findChannel(n); });
         if (layers) image.add_layers();
-        // The frame buffer addresses pixel (x, y) of the data window; shift the
-        // base so that the window's corner lands on element 0.
-        const auto origin = static_cast<std::ptrdiff_t>(window.min.y) * width + window.min.x;
+        // The data window's corner lands on element 0 (Slice::Make shifts the
+        // base for it); a missing channel reads as 0.
         const auto at = [&](auto* first, int c, std::size_t stride) {
-            return Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(first) + c * sizeof(float) - origin * static_cast<std::ptrdiff_t>(stride),
-                              stride, stride * static_cast<std::size_t>(width), 1, 1, 0.0);
+            return Imf::Slice::Make(Imf::FLOAT, reinterpret_cast<char*>(first) + c * sizeof(float), window, stride,
+                                    stride * static_cast<std::size_t>(width));
         };
         Imf::FrameBuffer frame;
         const char* rgb[3] = {"R", "G", "B"};

@@ -112,8 +112,14 @@ std::vector<std::pair<std::string, int>> PreparedScene::method_counts() const {
 MaterialId PreparedScene::material_id(const std::optional<Material>& material) {
     if (!material) return no_material;
     materials_.push_back(*material);
-    color_patterns_.push_back(material->color_pattern ? std::make_shared<const ColorPatternTapes>(*material->color_pattern)
-                                                      : nullptr);
+    std::shared_ptr<const ColorPatternTapes> pattern;
+    if (const auto& rgb = material->color_pattern) {
+        // Expressions are hash-consed: equal patterns (a loop's objects, say) have equal ids.
+        auto& shared = patterns_by_expr_[{rgb->at(0).id(), rgb->at(1).id(), rgb->at(2).id()}];
+        if (!shared) shared = std::make_shared<const ColorPatternTapes>(*rgb);
+        pattern = shared;
+    }
+    color_patterns_.push_back(std::move(pattern));
     return static_cast<MaterialId>(materials_.size() - 1);
 }
 

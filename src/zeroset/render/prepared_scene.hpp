@@ -5,7 +5,9 @@
 // every render thread.
 #pragma once
 
+#include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <unordered_map>
@@ -48,7 +50,7 @@ public:
     /// The material of a hit (the default one for no_material).
     [[nodiscard]] const Material& material(MaterialId id) const;
     /// The compiled colour pattern of each material (null where the colour
-    /// is constant), by MaterialId.
+    /// is constant), by MaterialId; equal patterns share one.
     [[nodiscard]] const std::vector<std::shared_ptr<const ColorPatternTapes>>& color_patterns() const {
         return color_patterns_;
     }
@@ -76,6 +78,7 @@ private:
     std::vector<Light> lights_;
     std::vector<Material> materials_;
     std::vector<std::shared_ptr<const ColorPatternTapes>> color_patterns_;  // parallel to materials_
+    std::map<std::array<const void*, 3>, std::shared_ptr<const ColorPatternTapes>> patterns_by_expr_;
     Material default_material_;
     std::vector<const ImplicitLeaf*> leaves_;
     std::vector<const Blob*> blobs_;

@@ -183,6 +183,7 @@ void validate(const RenderSettings& s) {
 RenderResult render(const Scene& scene, const RenderSettings& settings) {
     validate(settings);
     check_camera(scene.camera);
+    require_in_range(scene.image.reflection_depth, 0, max_reflection_depth, "the reflection depth");
     const auto start = std::chrono::steady_clock::now();
 
     const PreparedScene prepared(scene, {settings.method, settings.solver, settings.normals, settings.partition,

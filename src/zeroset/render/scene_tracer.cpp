@@ -3,21 +3,28 @@
 #include "zeroset/render/scene_tracer.hpp"
 
 #include <sstream>
+#include <unordered_map>
 
 namespace zeroset {
 
 SceneTracer::SceneTracer(const PreparedScene& prepared)
     : prepared_(&prepared), scratch_(prepared.leaves().size()) {
+    std::unordered_map<const ColorPatternTapes*, int> index;
     for (const auto& pattern : prepared.color_patterns()) {
-        patterns_.emplace_back();
-        if (pattern) patterns_.back().emplace(*pattern);
+        if (!pattern) {
+            pattern_of_.push_back(-1);
+            continue;
+        }
+        const auto [it, fresh] = index.emplace(pattern.get(), static_cast<int>(patterns_.size()));
+        if (fresh) patterns_.emplace_back(*pattern);
+        pattern_of_.push_back(it->second);
     }
 }
 
 Vec3d SceneTracer::albedo(const SurfaceHit& hit) {
     if (hit.material != no_material) {
-        auto& pattern = patterns_[static_cast<std::size_t>(hit.material)];
-        if (pattern) return (*pattern)(hit.local_point);
+        const int pattern = pattern_of_[static_cast<std::size_t>(hit.material)];
+        if (pattern >= 0) return patterns_[static_cast<std::size_t>(pattern)](hit.local_point);
     }
     return prepared_->material(hit.material).color;
 }

@@ -43,7 +43,8 @@ private:
 
     const PreparedScene* prepared_;
     TraceScratch scratch_;
-    std::vector<std::optional<ColorPatternEvaluator>> patterns_;  // by MaterialId, where there is a pattern
+    std::vector<ColorPatternEvaluator> patterns_;  // one for each distinct pattern of the scene
+    std::vector<int> pattern_of_;                   // by MaterialId: its index in patterns_, or -1
 };
 
 /// "the surface of object 'NAME' evaluates to NaN at (x, y, z) — …": the

@@ -122,7 +122,9 @@ private:
         if (const Binding* binding = context_.scope.find(text)) return binding->value;
         if (is_builtin_function(text) || text == model_function || find_algebraic_surface(text))
             in_.fail(token.where, "'" + std::string(text) + "' is a function: call it as " + std::string(text) + "(...)");
-        in_.fail(token.where, "unknown identifier '" + std::string(text) + "'");
+        std::vector<std::string_view> names = context_.scope.visible_names();
+        names.insert(names.end(), {"x", "y", "z", "pi", clock_name});
+        in_.fail(token.where, "unknown identifier '" + std::string(text) + "'" + did_you_mean(text, names));
     }
 
     /// A parenthesised expression, or a vector (a, b, c).
@@ -152,8 +154,11 @@ private:
         if (const AlgebraicSurface* surface = find_algebraic_surface(name.text)) return algebraic(name, *surface);
         if (!is_builtin_function(name.text)) {
             const bool is_value = context_.scope.find(name.text) || builtin_value(name.text) || name.text == clock_name;
-            in_.fail(name.where, is_value ? "'" + std::string(name.text) + "' is not a function"
-                                          : "unknown function '" + std::string(name.text) + "'");
+            if (is_value) in_.fail(name.where, "'" + std::string(name.text) + "' is not a function");
+            const std::vector<std::string> functions = function_names();
+            const std::vector<std::string_view> views(functions.begin(), functions.end());
+            in_.fail(name.where, "unknown function '" + std::string(name.text) + "'" + did_you_mean(name.text, views) +
+                                     " (the functions are " + join_words(views, "and") + ")");
         }
         const Nesting nesting(*this, name);
         in_.next();  // '('
@@ -288,7 +293,7 @@ std::vector<std::string> function_names() {
 }
 
 Value evaluate_expression_text(std::string_view text, const std::vector<std::pair<std::string, Value>>& bindings,
-                               const std::string& file_name, const std::filesystem::path& base_dir) {
+                               const std::string& file_name, const std::filesystem::path& base_dir, double clock) {
     TokenStream in(file_name, std::string(text));
     Scope scope;
     for (const auto& [name, value] : bindings) {
@@ -297,7 +302,7 @@ Value evaluate_expression_text(std::string_view text, const std::vector<std::pai
         scope.define(name, {value, file_name, nullptr});
     }
     ModelLibrary models;
-    const Value value = parse_expression(in, {scope, models, base_dir, SceneLimits{}.expression_nesting});
+    const Value value = parse_expression(in, {scope, models, base_dir, SceneLimits{}.expression_nesting, clock});
     if (!in.at(TokenKind::End)) in.fail_expected("the end of the expression");
     return value;
 }

@@ -35,10 +35,12 @@ Value parse_expression(TokenStream& in, const ExpressionContext& context);
 std::vector<std::string> function_names();
 
 /// Reads the whole of `text` as one expression, with `bindings` visible as
-/// names (as if bound by `let`) and model paths relative to `base_dir`.
-/// Throws SceneError naming `file_name` with the line and column in `text`.
+/// names (as if bound by `let`), `clock` reading `clock`, and model paths
+/// relative to `base_dir`. Throws SceneError naming `file_name` with the line
+/// and column in `text`.
 Value evaluate_expression_text(std::string_view text, const std::vector<std::pair<std::string, Value>>& bindings,
-                               const std::string& file_name, const std::filesystem::path& base_dir);
+                               const std::string& file_name, const std::filesystem::path& base_dir,
+                               double clock = 0.0);
 
 /// True for the names the language defines itself (x, y, z, pi, clock and the
 /// function names), which `let` may not bind.

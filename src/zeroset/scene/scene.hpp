@@ -106,9 +106,13 @@ struct ImageSettings {
     int width = 640;
     int height = 480;
     int samples_per_pixel = 1;
-    /// How many mirror bounces a camera ray may take; a ray past them sees black.
+    /// How many mirror bounces a camera ray may take (0 to max_reflection_depth);
+    /// a ray past them sees black.
     int reflection_depth = 5;
 };
+
+/// The deepest mirror recursion a render allows (each bounce is a stack frame).
+inline constexpr int max_reflection_depth = 64;
 
 struct Scene {
     Camera camera;

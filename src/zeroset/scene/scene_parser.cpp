@@ -26,18 +26,11 @@ constexpr std::array<std::string_view, 6> material_keys{"color", "ambient", "dif
 constexpr int max_image_size = 65536;
 /// Files including files, at most this deep (the reading recurses).
 constexpr int max_samples_per_pixel = 1024;
-constexpr int max_reflection_depth = 64;
 
 bool contains(std::span<const std::string_view> names, std::string_view name) {
     return std::ranges::find(names, name) != names.end();
 }
 
-/// The names method_from_name() accepts.
-std::vector<std::string_view> method_names() {
-    std::vector<std::string_view> names;
-    for (const Method m : all_methods()) names.push_back(method_name(m));
-    return names;
-}
 
 }  // namespace
 
@@ -282,28 +275,25 @@ const Token& SceneParser::choice(std::string_view what, std::span<const std::str
     if (!in_->at(TokenKind::Name)) in_->fail_expected("a " + std::string(what) + " (" + expected + ")");
     const Token& name = in_->next();
     if (std::ranges::find(names, name.text) == names.end())
-        in_->fail(name.where, "unknown " + std::string(what) + " '" + std::string(name.text) + "' (expected " + expected + ")");
+        in_->fail(name.where, unknown_choice(what, name.text, names));
     return name;
 }
 
-Method SceneParser::method() { return *method_from_name(choice("method", method_names()).text); }
+Method SceneParser::method() {
+    return *method_from_name(choice("method", names_of(all_methods(), method_name)).text);
+}
 
 Partition SceneParser::partition() {
-    std::vector<std::string_view> names;
-    for (const Partition p : all_partitions()) names.push_back(partition_name(p));
-    return *partition_from_name(choice("partition", names).text);
+    return *partition_from_name(choice("partition", names_of(all_partitions(), partition_name)).text);
 }
 
 PolynomialSolver SceneParser::polynomial_solver() {
-    std::vector<std::string_view> names;
-    for (const PolynomialSolver s : all_polynomial_solvers()) names.push_back(polynomial_solver_name(s));
-    return *polynomial_solver_from_name(choice("polynomial solver", names).text);
+    return *polynomial_solver_from_name(
+        choice("polynomial solver", names_of(all_polynomial_solvers(), polynomial_solver_name)).text);
 }
 
 NormalMode SceneParser::normal_mode() {
-    std::vector<std::string_view> names;
-    for (const NormalMode m : all_normal_modes()) names.push_back(normal_mode_name(m));
-    return *normal_mode_from_name(choice("normal mode", names).text);
+    return *normal_mode_from_name(choice("normal mode", names_of(all_normal_modes(), normal_mode_name)).text);
 }
 
 void SceneParser::block(const Token& keyword, std::span<const std::string_view> keys,
@@ -321,7 +311,7 @@ void SceneParser::block(const Token& keyword, std::span<const std::string_view> 
         if (key.kind != TokenKind::Name) in_->fail_expected("a key (" + expected_keys + ") or '}'");
         if (!contains(keys, key.text))
             in_->fail(key.where, "unknown key '" + std::string(key.text) + "' in the " + block_name +
-                                     " block (expected " + expected_keys + ")");
+                                     " block (expected " + expected_keys + ")" + did_you_mean(key.text, keys));
         if (!contains(repeatable, key.text)) {
             if (const auto first = seen.find(key.text); first != seen.end())
                 in_->fail(key.where, "'" + std::string(key.text) + "' is already set in this " + block_name +

@@ -22,6 +22,13 @@ const Binding* Scope::find(std::string_view name) const {
     return nullptr;
 }
 
+std::vector<std::string_view> Scope::visible_names() const {
+    std::vector<std::string_view> names;
+    for (std::size_t i = 0; i < entries_.size(); ++i)
+        if (visible(i)) names.push_back(entries_[i].name);
+    return names;
+}
+
 void Scope::define(std::string name, Binding binding) {
     by_name_[name].push_back(entries_.size());
     entries_.push_back({std::move(name), std::move(binding)});

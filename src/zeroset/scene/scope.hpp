@@ -33,6 +33,8 @@ struct Binding {
 class Scope {
 public:
     [[nodiscard]] const Binding* find(std::string_view name) const;
+    /// The names find() knows now (for "did you mean …").
+    [[nodiscard]] std::vector<std::string_view> visible_names() const;
     /// Binds a name that find() does not know yet, in the innermost frame.
     void define(std::string name, Binding binding);
 
