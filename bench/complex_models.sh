@@ -12,6 +12,11 @@ bear_runs=${BEAR_RUNS:-1}
 threads=${THREADS:-$(nproc)}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+models=../shared/models
+if [ ! -f "$models/bear.vm" ] || [ ! -f "$models/prospero.vm" ]; then
+  echo "complex_models.sh: skipped: the shared models ($models/bear.vm, prospero.vm) are not beside the repository" >&2
+  exit 0
+fi
 
 # The median of the numbers on stdin.
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
@@ -45,7 +50,7 @@ slice_row() {
 python3 bench/models/molecule.py 50 > "$work/molecule.zs"
 echo "| case | time | details |"
 echo "| --- | --- | --- |"
-render_row "bear.vm, 1024², shaded, shadows" "$bear_runs" scenes/examples/bear.zs --width 1024 --height 1024
+render_row "bear.vm, 1024², shaded, shadows" "$bear_runs" bench/scenes/bear.zs --width 1024 --height 1024
 render_row "50-atom exp molecule, 640×480" "$runs" "$work/molecule.zs"
 slice_row "prospero.vm slice, 1024²" 1 ../shared/models/prospero.vm --size 1024
 slice_row "prospero.vm slice, 1024²" 2 ../shared/models/prospero.vm --size 1024

@@ -1,6 +1,6 @@
 // Octree builds (accel/octree.hpp) per model, depth and thread count: time,
 // cells, memory, clauses a cell against the full tape, and the cells' median
-// Lipschitz bound. bear.vm over the bounds of scenes/examples/bear.zs;
+// Lipschitz bound. bear.vm over the bounds of bench/scenes/bear.zs;
 // prospero.vm (a 2-D model) over a slab of its ±1 square.
 #include <benchmark/benchmark.h>
 

@@ -3,6 +3,7 @@
 // "main flaw" of §6.2), and rays walking cells find the same hits as rays
 // over the whole bounds.
 #include <gtest/gtest.h>
+#include "support/models.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -58,6 +59,8 @@ std::vector<Vec3d> surface_points(const Tape& tape, const Box3& box, int wanted)
 }
 
 TEST(Octree, EverySurfacePointOfTheBearIsInACell) {
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
+
     const Tape tape(bear());
     OctreeSettings settings;
     settings.max_depth = 4;
@@ -80,6 +83,8 @@ TEST(Octree, EverySurfacePointOfTheBearIsInACell) {
 }
 
 TEST(Octree, CellCapStopsSubdivision) {
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
+
     const Tape tape(bear());
     OctreeSettings settings;
     settings.max_depth = 6;
@@ -186,6 +191,8 @@ TEST(Octree, SeedFillTracksTheSeedsComponentOnly) {
 
 /// First hits with and without the octree agree on rays through the bear.
 TEST(Octree, RaysOverCellsFindTheSameFirstHits) {
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
+
     for (const Method method : {Method::Interval, Method::Sphere, Method::Lg}) {
         SCOPED_TRACE(method_name(method));
         const auto leaf = [&](Partition partition) {

@@ -249,8 +249,9 @@ namespace {
 // and leaves no file — neither the image nor a hidden temporary.
 TEST_F(Cli, AnInterruptedRenderStopsPromptlyAndWritesNothing) {
     for (const char* signal : {"INT", "TERM"}) {
-        const std::string command = std::string("'" ZEROSET_BINARY "' render '") + ZEROSET_SOURCE_DIR +
-                                    "/scenes/examples/bear.zs' -o slow.png --width 800 --height 600 & pid=$!; "
+        // The built-in scene at 4000×3000 with 16 samples a pixel: many seconds of work.
+        const std::string command = std::string("'" ZEROSET_BINARY "' render") +
+                                    " -o slow.png --width 4000 --height 3000 --spp 16 & pid=$!; "
                                     "sleep 0.5; kill -" + signal + " $pid; wait $pid; echo status=$?";
         const Outcome r = run_shell(command);
         EXPECT_NE(r.out.find(std::string("status=") + (std::string(signal) == "INT" ? "130" : "143")),

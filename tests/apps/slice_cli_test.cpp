@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "support/cli_test.hpp"
+#include "support/models.hpp"
 #include "zeroset/io/image_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -25,6 +26,8 @@ int black_pixels(const zeroset::Image& image) {
 }
 
 TEST_F(SliceCli, ProsperoIsBlackTextOnWhite) {
+    ZEROSET_SKIP_WITHOUT_MODEL("prospero.vm");
+
     const Outcome r = run("slice '" ZEROSET_MODELS_DIR "/prospero.vm' --size 128 -o p.png");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("wrote p.png (128x128)"), std::string::npos) << r.err;

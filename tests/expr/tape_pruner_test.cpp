@@ -1,6 +1,7 @@
 // Tape pruning: inside the box the pruned tape computes exactly what the full
 // tape computes, with fewer clauses wherever a min/max side wins outright.
 #include <gtest/gtest.h>
+#include "support/models.hpp"
 
 #include <fstream>
 #include <random>
@@ -105,6 +106,8 @@ TEST(TapePruner, PruningAPrunedTapeNarrowsFurther) {
 }
 
 TEST(TapePruner, BearStaysExactAndShrinksInSmallBoxes) {
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
+
     std::ifstream in(ZEROSET_MODELS_DIR "/bear.vm");
     const Tape full(import_vm(in));
     TapePruner pruner(full);
@@ -126,6 +129,8 @@ TEST(TapePruner, BearStaysExactAndShrinksInSmallBoxes) {
 }
 
 TEST(TapePruner, ProsperoShrinksByOrdersOfMagnitudeInSmallBoxes) {
+    ZEROSET_SKIP_WITHOUT_MODEL("prospero.vm");
+
     std::ifstream in(ZEROSET_MODELS_DIR "/prospero.vm");
     const Tape full(import_vm(in));
     TapePruner pruner(full);

@@ -4,6 +4,7 @@
 #include "zeroset/expr/tape.hpp"
 
 #include <gtest/gtest.h>
+#include "support/models.hpp"
 
 #include <fstream>
 #include <set>
@@ -163,6 +164,9 @@ TEST(Tape, SquaringAValueReadsOneSlotTwice) {
 }
 
 TEST(Tape, RegisterAllocationOnRealModels) {
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
+    ZEROSET_SKIP_WITHOUT_MODEL("prospero.vm");
+
     for (const char* name : {"bear.vm", "prospero.vm"}) {
         SCOPED_TRACE(name);
         const Expr model = load(name);

@@ -3,6 +3,7 @@
 #include "zeroset/expr/vm_import.hpp"
 
 #include <gtest/gtest.h>
+#include "support/models.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -28,6 +29,9 @@ Expr parse(const std::string& text) {
 }
 
 TEST(VmImport, RealModelsLoadAndEvaluate) {
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
+    ZEROSET_SKIP_WITHOUT_MODEL("prospero.vm");
+
     for (const char* name : {"bear.vm", "prospero.vm"}) {
         SCOPED_TRACE(name);
         const Expr model = load(name);
@@ -68,6 +72,8 @@ TEST(VmImport, RealModelsLoadAndEvaluate) {
 }
 
 TEST(VmImport, ProsperoHasInkAndPaper) {
+    ZEROSET_SKIP_WITHOUT_MODEL("prospero.vm");
+
     // The text model is negative on the letters and positive between them.
     const Tape tape(load("prospero.vm"));
     Evaluator<double> eval(tape);

@@ -2,6 +2,7 @@
 // one tape, one set of evaluators per thread — with a transform per
 // placement (DESIGN.md, "Primitives").
 #include <gtest/gtest.h>
+#include "support/models.hpp"
 
 #include <string>
 
@@ -13,6 +14,8 @@ namespace zeroset {
 namespace {
 
 TEST(Instances, AThousandBearsAreOneTape) {
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
+
     const std::string text =
         "camera { from (15, 40, -60)  at (15, 0, 15)  fov 40 }\n"
         "shape bear { object { surface model(\"" ZEROSET_MODELS_DIR

@@ -3,6 +3,7 @@
 // where it was evaluated on a pruned tape — and the tile quadtree shrinks a
 // real CSG model's tape by orders of magnitude.
 #include <gtest/gtest.h>
+#include "support/models.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -100,6 +101,8 @@ TEST(Slice, ImageAxesFollowThePlane) {
 }
 
 TEST(Slice, ProsperoMatchesTheFullTapeWithTapesShrunkAHundredfold) {
+    ZEROSET_SKIP_WITHOUT_MODEL("prospero.vm");
+
     std::ifstream in(ZEROSET_MODELS_DIR "/prospero.vm");
     const Tape tape(import_vm(in));
     SliceSettings settings;

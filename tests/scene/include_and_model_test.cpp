@@ -3,6 +3,7 @@
 // inside the .vm file. Files are written to a fresh temporary directory.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include "support/models.hpp"
 #include <sys/stat.h>
 
 #include <fstream>
@@ -109,6 +110,8 @@ TEST(LoadScene, ErrorCarriesItsParts) {
 }
 
 TEST(Model, ImportsTheBear) {
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
+
     const Scene s = parse_scene("object { surface model(\"" ZEROSET_MODELS_DIR "/bear.vm\") }", "scene.zs", ".");
     const Expr bear = placed_objects(s).at(0).object().surface;
     EXPECT_GT(bear.node_count(), 100U);

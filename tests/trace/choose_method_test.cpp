@@ -1,6 +1,7 @@
 // `auto` resolves to the interval method on small tapes and to sphere
 // tracing on large ones; explicit methods pass through.
 #include <gtest/gtest.h>
+#include "support/models.hpp"
 
 #include <fstream>
 
@@ -11,6 +12,8 @@ namespace zeroset {
 namespace {
 
 TEST(ChooseMethod, AutoPicksIntervalForSmallTapesAndSphereForLargeOnes) {
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
+
     const Tape blob(Expr(1.0) - exp(-(square(var_x() - 1.2) + square(var_y()) + square(var_z()) - 1.0)));
     EXPECT_EQ(resolve_method(Method::Auto, blob), Method::Interval);
     std::ifstream in(ZEROSET_MODELS_DIR "/bear.vm");

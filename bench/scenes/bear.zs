@@ -1,4 +1,5 @@
-# A bear's head: a real f-rep model in fidget's .vm format, imported with
+# A benchmark scene (not an example: it needs the shared models folder beside
+# the repository). A bear's head: a real f-rep model in fidget's .vm format, imported with
 # model(). The path is relative to this file; the model lives in the shared
 # models folder beside the repository (MPL-2.0, see LICENSE-MPL-2.0.txt there).
 # The bear faces -x; its surface lies within x in [-0.63, 0.96],
