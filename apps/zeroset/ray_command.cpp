@@ -2,9 +2,10 @@
 // method — the survey's comparison on its own worked example (§§2–5), and a
 // tool to see why a method misses a hit on any ray. Everything is checked
 // before any output; the plot is written atomically.
+#include <charconv>
 #include <cstdio>
-#include <stdexcept>
 #include <filesystem>
+#include <stdexcept>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "ray_list.hpp"
 #include "ray_options.hpp"
 #include "ray_plot.hpp"
+#include "zeroset/render/camera_rays.hpp"
 #include "zeroset/render/ray_report.hpp"
 #include "zeroset/scene/load_scene.hpp"
 
@@ -43,8 +45,12 @@ Options:
   --origin X,Y,Z      the ray's origin
   --dir X,Y,Z         the ray's direction (not zero; used as given)
   --object NAME       the object to intersect (default: the scene's first)
+  --pixel X,Y         the camera's ray through the centre of pixel (X, Y) of
+                      the scene's image (its own size; 0,0 is the top left):
+                      what `zeroset render` traces there
   --method M|all      one method or all of them (default: all): auto, sphere,
-                      interval, lg, newton, regula_falsi, bisection; auto is
+                      interval, lg, polynomial, newton, regula_falsi,
+                      bisection; auto is
                       shown with the method it stands for, e.g. "auto (sphere)"
   --newton-from T0    start Newton's method at t = T0 (default: t0, the span's start)
   --json              print one JSON object per ray instead of the table
@@ -71,17 +77,40 @@ std::vector<Method> chosen_methods(const Options& options) {
     return {*options.choice("--method", "method", all_methods(), method_name)};
 }
 
-/// The rays to cast: from --rays, or --origin/--dir (the survey's ray for the default scene).
-std::vector<Ray> chosen_rays(const Options& options, bool default_scene) {
+/// --pixel X,Y: the camera ray through the centre of that pixel of the scene's image.
+Ray pixel_ray(const Scene& scene, const std::string& text) {
+    const auto comma = text.find(',');
+    const auto whole = [&](std::string_view part, int size, const char* axis) {
+        int v = -1;
+        const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), v);
+        if (error != std::errc{} || end != part.data() + part.size() || v < 0 || v >= size)
+            throw UsageError("--pixel " + text + ": " + axis + " must be a whole number from 0 to " +
+                             std::to_string(size - 1) + " (the scene's image is " + std::to_string(scene.image.width) +
+                             "x" + std::to_string(scene.image.height) + ")");
+        return v;
+    };
+    if (comma == std::string::npos) throw UsageError("--pixel takes X,Y, e.g. --pixel 320,240");
+    const std::string_view all = text;
+    const int px = whole(all.substr(0, comma), scene.image.width, "X");
+    const int py = whole(all.substr(comma + 1), scene.image.height, "Y");
+    return CameraRays(scene.camera, scene.image.width, scene.image.height).ray(px, py, 0.5, 0.5);
+}
+
+/// The rays to cast: from --rays, --pixel, or --origin/--dir (the survey's ray for the default scene).
+std::vector<Ray> chosen_rays(const Options& options, const Scene& scene, bool default_scene) {
     const auto origin = vector_option(options, "--origin");
     const auto dir = vector_option(options, "--dir");
+    if (const auto pixel = options.value("--pixel")) {
+        if (origin || dir || options.value("--rays")) throw UsageError("give --pixel, --rays or --origin/--dir, one of them");
+        return {pixel_ray(scene, *pixel)};
+    }
     if (const auto file = options.value("--rays")) {
         if (origin || dir) throw UsageError("give --rays or --origin/--dir, not both");
         if (options.value("--plot")) throw UsageError("--plot draws one ray; it cannot be used with --rays");
         return read_ray_list(*file);
     }
     if (!default_scene && (!origin || !dir))
-        throw UsageError("with a scene file, give the ray: --origin X,Y,Z and --dir X,Y,Z (or --rays FILE)");
+        throw UsageError("with a scene file, give the ray: --origin X,Y,Z and --dir X,Y,Z (or --pixel X,Y, or --rays FILE)");
     const Ray ray{origin.value_or(survey_origin), dir.value_or(survey_dir)};
     if (ray.dir == Vec3d{}) throw UsageError("option --dir must not be zero");
     return {ray};
@@ -91,7 +120,7 @@ std::vector<Ray> chosen_rays(const Options& options, bool default_scene) {
 
 int ray_command(const std::vector<std::string>& args) {
     const Options options(args, {"--origin", "--dir", "--object", "--method", "--newton-from", "--rays", "--plot",
-                                 "--compare", "--compare-object"},
+                                 "--compare", "--compare-object", "--pixel"},
                           {"-h", "--help", "--json"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(ray_usage, stdout);
@@ -103,10 +132,10 @@ int ray_command(const std::vector<std::string>& args) {
         throw UsageError("--plot writes SVG: give a file name ending in .svg, not '" + plot_file->string() + "'");
     const bool default_scene_used = options.positional().empty();
     const std::vector<Method> methods = chosen_methods(options);
-    const std::vector<Ray> rays = chosen_rays(options, default_scene_used);
     const std::optional<double> newton_from = number_option(options, "--newton-from");
 
     const Scene scene = default_scene_used ? default_scene() : load_scene(options.positional()[0]);
+    const std::vector<Ray> rays = chosen_rays(options, scene, default_scene_used);
     const PlacedObject placed = find_object(scene, options.value("--object"));
     const RaySubject subject{default_scene_used ? "<default>" : options.positional()[0], placed.name(), newton_from};
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "support/cli_test.hpp"
+#include "zeroset/io/image_reader.hpp"
 
 namespace fs = std::filesystem;
 
@@ -296,6 +297,36 @@ TEST_F(RayCli, TransformedObjectIsProbedInItsOwnSpace) {
     ASSERT_EQ(m.hits.size(), 2u);
     EXPECT_NEAR(m.hits[0], 2.5, 1e-12);  // the ball of radius 0.5 at x = 3, in the scene's t
     EXPECT_NEAR(m.hits[1], 3.5, 1e-12);
+}
+
+}  // namespace
+
+namespace {
+
+class RayPixel : public zeroset::test::CliTest {};
+
+/// The number after "first_hit": in one line of `zeroset ray --json`.
+double first_hit_of(const std::string& json) {
+    const auto at = json.find("\"first_hit\":");
+    if (at == std::string::npos) return NAN;
+    return std::strtod(json.c_str() + at + 12, nullptr);
+}
+
+TEST_F(RayPixel, IsTheRayTheRendererTracesThere) {
+    // The EXR's depth at a pixel is the distance along that pixel's camera
+    // ray; --pixel must cast the same ray, so its first hit is that depth.
+    ASSERT_EQ(run("render -q -o out.exr").status, 0);
+    const zeroset::Image image = zeroset::read_exr(dir_ / "out.exr");
+    for (const auto& [px, py] : {std::pair{400, 300}, std::pair{300, 280}, std::pair{520, 330}}) {
+        const Outcome r = run("ray --pixel " + std::to_string(px) + "," + std::to_string(py) + " --method interval --json");
+        ASSERT_EQ(r.status, 0) << r.err;
+        const double depth = image.depth[static_cast<std::size_t>(py * image.width + px)];
+        EXPECT_NEAR(first_hit_of(r.out), depth, 1e-5 * depth) << px << "," << py << ": " << r.out;
+    }
+    const Outcome outside = run("ray --pixel 800,0");
+    EXPECT_EQ(outside.status, 2);
+    EXPECT_NE(outside.err.find("X must be a whole number from 0 to 799"), std::string::npos) << outside.err;
+    EXPECT_EQ(run("ray --pixel 1,2 --origin 0,0,0").status, 2);
 }
 
 }  // namespace
