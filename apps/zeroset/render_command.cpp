@@ -146,6 +146,8 @@ int render_command(const std::vector<std::string>& args) {
         }();
         bar.finish();
         output.write(result.image, number);
+        if (frame == 0)  // the same scene's warnings for every frame: once is enough
+            for (const std::string& warning : result.stats.warnings) std::fprintf(stderr, "zeroset: warning: %s\n", warning.c_str());
         if (!quiet)
             std::fprintf(stderr, "zeroset: wrote %s — %s\n", output.name(number).c_str(),
                          summary_line(result.stats).c_str());

@@ -64,6 +64,8 @@ py::object render_scene(const Scene& scene, std::optional<int> width, std::optio
         const py::gil_scoped_release unlocked;
         result = render(copy, settings);
     }
+    for (const std::string& warning : result.stats.warnings)
+        if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
     const Image& image = result.image;
     py::array_t<float> rgb = rgb_array(image.pixels, image.width, image.height);
     if (!layers) return rgb;

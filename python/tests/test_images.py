@@ -126,6 +126,12 @@ def test_write_image_by_extension(tmp_path):
         zs.write_image(str(tmp_path / "b.png"), np.zeros((0, 4, 3), dtype=np.float32))
 
 
+def test_bounds_that_cut_the_solid_warn():
+    text = 'object "ball" { surface x^2 + y^2 + z^2 - 1  bounds box((-1.1, -1.1, -1.1), (1.1, 1.1, 0.5)) }'
+    with pytest.warns(UserWarning, match=r"<string>:1:1: object 'ball': its bounds cut through its solid"):
+        zs.render(zs.parse_scene(text), 8, 6)
+
+
 def test_render_errors_are_render_errors():
     with pytest.raises(zs.RenderError, match="width must be between"):
         zs.render(zs.default_scene(), 0, 10)

@@ -8,6 +8,7 @@ light  { from (-4, -6, 8) }
 light  { direction (1, 0.6, -0.4)  color (0.25, 0.25, 0.3)  shadows off }
 
 object "Barth sextic" {
+  cut on   # the bounds clip the solid on purpose
   surface barth_sextic()
   bounds  sphere((0, 0, 0), 1.8)
   material { color (0.55, 0.7, 0.35)  specular 0.4 }

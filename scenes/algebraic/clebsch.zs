@@ -10,6 +10,7 @@ light  { from (-4, -6, 8) }
 light  { direction (1, 0.6, -0.4)  color (0.25, 0.25, 0.3)  shadows off }
 
 object "Clebsch surface" {
+  cut on   # the bounds clip the solid on purpose
   surface -clebsch()
   bounds  sphere((0.3333333, 0.3333333, 0.3333333), 1.3)
   material { color (0.85, 0.55, 0.3)  specular 0.4 }

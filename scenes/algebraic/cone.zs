@@ -6,6 +6,7 @@ light  { from (-4, -6, 8) }
 light  { direction (1, 0.6, -0.4)  color (0.25, 0.25, 0.3)  shadows off }
 
 object "cone" {
+  cut on   # the bounds clip the solid on purpose
   surface cone(0.6)
   bounds  box((-0.85, -0.85, -1.4), (0.85, 0.85, 1.4))
   material { color (0.85, 0.6, 0.25)  specular 0.4 }

@@ -7,6 +7,7 @@ light  { from (-4, -6, 8) }
 light  { direction (1, 0.6, -0.4)  color (0.25, 0.25, 0.3)  shadows off }
 
 object "cylinder" {
+  cut on   # the bounds clip the solid on purpose
   surface cylinder(0.5)
   bounds  box((-0.51, -0.51, -1.2), (0.51, 0.51, 1.2))
   material { color (0.35, 0.7, 0.45)  specular 0.4 }

@@ -8,6 +8,7 @@ light  { from (-4, -6, 8) }
 light  { direction (1, 0.6, -0.4)  color (0.25, 0.25, 0.3)  shadows off }
 
 object "Endrass octic" {
+  cut on   # the bounds clip the solid on purpose
   surface endrass_octic()
   bounds  sphere((0, 0, 0), 1.8)
   material { color (0.65, 0.45, 0.8)  specular 0.4 }

@@ -8,6 +8,7 @@ light  { from (-4, -6, 8) }
 light  { direction (1, 0.6, -0.4)  color (0.25, 0.25, 0.3)  shadows off }
 
 object "Kummer surface" {
+  cut on   # the bounds clip the solid on purpose
   surface kummer(1.69)
   bounds  sphere((0, 0, 0), 2.6)
   material { color (0.45, 0.6, 0.85)  specular 0.4 }

@@ -6,6 +6,7 @@ light  { from (-4, -6, 8) }
 light  { direction (1, 0.6, -0.4)  color (0.25, 0.25, 0.3)  shadows off }
 
 object "paraboloid" {
+  cut on   # the bounds clip the solid on purpose
   surface paraboloid(1)
   bounds  box((-1.01, -1.01, -0.01), (1.01, 1.01, 1))
   material { color (0.7, 0.4, 0.75)  specular 0.4 }

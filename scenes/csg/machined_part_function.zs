@@ -17,4 +17,4 @@ object "part" {
   material { color (0.62, 0.64, 0.68)  specular 0.6  shininess 60 }
 }
 
-object "plate" { surface y + 0.35  bounds box((-3, -0.45, -2.2), (3, -0.35, 2.6))  material { color (0.35, 0.37, 0.4)  specular 0.1 } }
+object "plate" { cut on surface y + 0.35  bounds box((-3, -0.45, -2.2), (3, -0.35, 2.6))  material { color (0.35, 0.37, 0.4)  specular 0.1 } }

@@ -12,7 +12,7 @@ light  { direction (1, -0.4, 1)  color (0.2, 0.2, 0.24)  shadows off }
 include "machined_part.inc"
 
 shape drill(r) {
-  object { surface x^2 + z^2 - r^2  bounds box((-r, -1, -r), (r, 1.5, r))  material { color (0.4, 0.42, 0.46)  specular 0.3 } }
+  object { cut on surface x^2 + z^2 - r^2  bounds box((-r, -1, -r), (r, 1.5, r))  material { color (0.4, 0.42, 0.46)  specular 0.3 } }
 }
 
 difference "part" {
@@ -25,4 +25,4 @@ difference "part" {
   material { color (0.62, 0.64, 0.68)  specular 0.6  shininess 60 }
 }
 
-object "plate" { surface y + 0.35  bounds box((-3, -0.45, -2.2), (3, -0.35, 2.6))  material { color (0.35, 0.37, 0.4)  specular 0.1 } }
+object "plate" { cut on surface y + 0.35  bounds box((-3, -0.45, -2.2), (3, -0.35, 2.6))  material { color (0.35, 0.37, 0.4)  specular 0.1 } }

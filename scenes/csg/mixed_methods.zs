@@ -19,6 +19,7 @@ difference "spongy ring" {
     material { color (0.85, 0.75, 0.45)  specular 0.4 }
   }
   object "gyroid" {
+    cut on   # the bounds clip the solid on purpose
     surface sin(5*x)*cos(5*y) + sin(5*y)*cos(5*z) + sin(5*z)*cos(5*x) + 0.7
     bounds  box((-1.6, -0.5, -1.6), (1.6, 0.5, 1.6))
     method  interval
@@ -32,4 +33,4 @@ difference "spongy ring" {
   }
 }
 
-object "plate" { surface y + 0.47  bounds box((-2.3, -0.55, -1.9), (2.3, -0.47, 2.4))  material { color (0.7, 0.7, 0.68)  specular 0 } }
+object "plate" { cut on surface y + 0.47  bounds box((-2.3, -0.55, -1.9), (2.3, -0.47, 2.4))  material { color (0.7, 0.7, 0.68)  specular 0 } }

@@ -22,6 +22,7 @@ object "column" {
 }
 
 object "floor" {
+  cut on   # the bounds clip the solid on purpose
   surface y + 1.5
   bounds  box((-8, -1.6, -4), (8, -1.4, 10))
   material { color (0.55, 0.6, 0.7)  specular 0 }

@@ -18,6 +18,7 @@ object "twisted torus" {
 }
 
 object "floor" {
+  cut on   # the bounds clip the solid on purpose
   surface y + 1.6
   bounds  box((-8, -1.7, -4), (8, -1.5, 10))
   material { color (0.75, 0.75, 0.72)  specular 0 }

@@ -20,6 +20,7 @@ object "blobs" {
 }
 
 object "floor" {
+  cut on   # the bounds clip the solid on purpose
   surface y + 1.3
   bounds  box((-12, -1.4, -6), (12, -1.2, 14))
   material { color (0.75, 0.75, 0.72)  specular 0 }

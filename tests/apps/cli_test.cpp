@@ -156,6 +156,21 @@ TEST_F(Cli, FramesAreNumberedFilesWithTheClockRunningFromZeroToOne) {
     EXPECT_FALSE(fs::exists(dir_ / "stuck_0002.png"));
 }
 
+TEST_F(Cli, BoundsThatCutTheSolidAreAWarningUnlessTheSceneSaysSo) {
+    write("cut.zs", "camera { from (0, 0, -5) }\n"
+                    "object \"ball\" {\n  surface x^2 + y^2 + z^2 - 1\n  bounds box((-1.1, -1.1, -1.1), (1.1, 1.1, 0.5))\n}\n");
+    const Outcome r = run("render cut.zs -q -o cut.png --width 16 --height 12");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("zeroset: warning: cut.zs:2:1: object 'ball': its bounds cut through its solid: f < 0 at "),
+              std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("on the face z = 0.5"), std::string::npos) << r.err;
+    write("meant.zs", "camera { from (0, 0, -5) }\n"
+                      "object \"ball\" { surface x^2 + y^2 + z^2 - 1  bounds box((-1.1, -1.1, -1.1), (1.1, 1.1, 0.5))  cut on }\n");
+    const Outcome meant = run("render meant.zs -q -o meant.png --width 16 --height 12");
+    ASSERT_EQ(meant.status, 0) << meant.err;
+    EXPECT_EQ(meant.err, "");
+}
+
 TEST_F(Cli, SyntaxErrorNamesFileLineColumnAndWritesNothing) {
     write("bad.zs", "camera { from (0, 0, -5) }\nobject { surface x^2 + * y }\n");
     const std::size_t before = file_count();

@@ -3,6 +3,8 @@
 // a material on a node an instance around its primitive.
 #include "zeroset/render/prepared_scene.hpp"
 
+#include "zeroset/trace/bounds_cut.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -123,6 +125,17 @@ MaterialId PreparedScene::material_id(const std::optional<Material>& material) {
     return static_cast<MaterialId>(materials_.size() - 1);
 }
 
+void PreparedScene::warn_of_cut(const SceneNode& node, const std::string& name, const Tape& tape) {
+    const auto cut = find_bounds_cut(tape, node.object.bounds);
+    if (!cut) return;
+    char point[128];
+    std::snprintf(point, sizeof point, "(%.6g, %.6g, %.6g)", cut->point.x, cut->point.y, cut->point.z);
+    warnings_.push_back((node.defined_at.empty() ? "" : node.defined_at + ": ") + "object '" + name +
+                        "': its bounds cut through its solid: f < 0 at " + point + " on " + cut->where +
+                        " (in its own coordinates), so the bounds are drawn there as a flat face. Enlarge the "
+                        "bounds, or say `cut on` in the object if the cut is meant");
+}
+
 std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node) {
     if (const auto known = prepared_.find(node.get()); known != prepared_.end()) return known->second;
 
@@ -173,6 +186,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
                     ++planes_;
                 } else {
                     auto leaf = std::make_shared<const ImplicitLeaf>(leaves_.size(), std::move(d));
+                    if (!o.cut_by_bounds) warn_of_cut(*node, name, leaf->tape());
                     leaves_.push_back(leaf.get());
                     primitive = std::move(leaf);
                 }

@@ -64,6 +64,9 @@ public:
     /// components, exact degree-4 polynomials, guarded segments, BVH 450 nodes,
     /// 0.3 MB"; empty when there are none.
     [[nodiscard]] std::string blob_summary() const;
+    /// What the scene may not have meant, e.g. "scene.zs:12:1: object 'ball':
+    /// its bounds cut through its solid …" (trace/bounds_cut.hpp).
+    [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
     /// The scene's lights, or — when it has none — one white point light at the camera.
     [[nodiscard]] const std::vector<Light>& lights() const { return lights_; }
 
@@ -72,6 +75,8 @@ private:
     /// footprints_ from the camera and the image size.
     void measure_footprints(const Scene& scene);
     MaterialId material_id(const std::optional<Material>& material);
+    /// Notes a warning when the object's bounds cut through its solid.
+    void warn_of_cut(const SceneNode& node, const std::string& name, const Tape& tape);
 
     const Scene* scene_;
     ObjectOverrides overrides_;
@@ -81,6 +86,7 @@ private:
     std::map<std::array<const void*, 3>, std::shared_ptr<const ColorPatternTapes>> patterns_by_expr_;
     Material default_material_;
     std::vector<const ImplicitLeaf*> leaves_;
+    std::vector<std::string> warnings_;
     std::vector<const Blob*> blobs_;
     int planes_ = 0;
     std::unordered_map<const SceneNode*, std::shared_ptr<const Primitive>> prepared_;  // by node, for sharing

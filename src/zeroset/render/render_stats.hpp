@@ -30,6 +30,8 @@ struct RenderStats {
     std::string partitions;
     /// PreparedScene::blob_summary().
     std::string blobs;
+    /// PreparedScene::warnings().
+    std::vector<std::string> warnings;
 };
 
 /// "800x600, 1 spp, 2 threads: 1.23 s (prepare 0.01 s, trace 1.22 s); 790000 rays (480000 camera, 310000 shadow), 150000 hits; 10.2M evaluations (9.1M point, 0.8M interval, 0.3M gradient); objects: polynomial 2, sphere 1"

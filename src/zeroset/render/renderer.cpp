@@ -251,6 +251,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     stats.methods = prepared.method_counts();
     stats.partitions = prepared.partition_summary();
     stats.blobs = prepared.blob_summary();
+    stats.warnings = prepared.warnings();
     return result;
 }
 

@@ -76,6 +76,9 @@ struct Object {
     std::shared_ptr<const BlobModel> blob;
     double blob_tolerance = default_blinn_tolerance;  // Blinn's cut-off, relative to the threshold
     bool blob_quadratics = false;  // metaballs: the survey's quadratic pieces instead of the exact kernel
+    /// The bounds may cut through the solid on purpose (a cut-away): no
+    /// warning when they do (trace/bounds_cut.hpp).
+    bool cut_by_bounds = false;
 };
 
 /// The object's f: its surface, or a blob's field as an expression.
@@ -92,6 +95,7 @@ struct SceneNode {
     enum class Kind { Object, Group, Intersection, Difference };
     Kind kind = Kind::Group;
     std::string name;                    // for messages, statistics and `zeroset ray --object`
+    std::string defined_at;              // "file:line:column" of its statement, for warnings; may be empty
     Object object;                       // Kind::Object
     std::vector<SceneNodePtr> children;  // the other kinds
     Mat4 transform = Mat4::identity();   // from the node's own space to its parent's

@@ -16,8 +16,8 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 7> object_keys{"surface", "bounds", "method", "solver", "normals", "partition",
-                                                      "material"};
+constexpr std::array<std::string_view, 8> object_keys{"surface", "bounds", "method", "solver", "normals", "partition",
+                                                      "material", "cut"};
 constexpr std::array<std::string_view, 7> node_keywords{"object",     "group",    "union", "intersection",
                                                         "difference", "instance", "blob"};
 
@@ -86,6 +86,7 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
     auto node = std::make_shared<SceneNode>();
     node->kind = SceneNode::Kind::Object;
     if (in_->at(TokenKind::String)) node->name = in_->next().text;
+    node->defined_at = format_location(in_->file_name(), keyword.where);
     Object& object = node->object;
     bool has_surface = false;
     SourceLocation surface_at{};
@@ -116,6 +117,8 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
                 object.normals = normal_mode();
             } else if (key.text == "partition") {
                 object.partition = partition();
+            } else if (key.text == "cut") {
+                object.cut_by_bounds = on_off("cut");
             } else {
                 node->material = material(key);
             }
