@@ -11,5 +11,6 @@ int render_command(const std::vector<std::string>& args);
 int basins_command(const std::vector<std::string>& args);
 int ray_command(const std::vector<std::string>& args);
 int slice_command(const std::vector<std::string>& args);
+int mesh_command(const std::vector<std::string>& args);
 
 }  // namespace zeroset::cli

@@ -19,6 +19,7 @@ Usage:
   zeroset basins [SCENE] [options]   map where Newton's method converges along a ray (the survey's Figure 5)
   zeroset ray [SCENE] [options]      every intersection method on one ray: hits, evaluations, a plot of H(t)
   zeroset slice INPUT [options]      f on a plane: its sign, or its value with the zero contour
+  zeroset mesh INPUT -o OUT.stl      a triangle mesh of the surface (.stl, .obj or .ply)
   zeroset --help                     this text
   zeroset COMMAND --help             a command's options
   zeroset --version                  the version
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
         if (args[0] == "basins") return zeroset::cli::basins_command(rest);
         if (args[0] == "ray") return zeroset::cli::ray_command(rest);
         if (args[0] == "slice") return zeroset::cli::slice_command(rest);
-        constexpr std::string_view commands[] = {"render", "basins", "ray", "slice"};
+        if (args[0] == "mesh") return zeroset::cli::mesh_command(rest);
+        constexpr std::string_view commands[] = {"render", "basins", "ray", "slice", "mesh"};
         throw zeroset::cli::UsageError("unknown command '" + args[0] + "'" + zeroset::did_you_mean(args[0], commands) +
                                        " (try zeroset --help)");
     } catch (const zeroset::cli::UsageError& e) {

@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "image_output.hpp"
+#include "model_input.hpp"
 #include "options.hpp"
 #include "ray_options.hpp"
 #include "zeroset/expr/batch_lanes.hpp"
@@ -62,27 +63,6 @@ int axis_from_name(const std::string& name) {
     throw UsageError("unknown axis '" + name + "' (give x, y or z)");
 }
 
-/// The surface to slice and the square its bounds suggest.
-struct SliceInput {
-    Expr surface;
-    std::optional<Box3> bounds;  // none for a .vm model
-};
-
-SliceInput load_input(const std::filesystem::path& path, const Options& options) {
-    if (path.extension() == ".vm") {
-        if (options.value("--object")) throw UsageError("--object needs a scene file, not a .vm model");
-        try {
-            ModelLibrary library;
-            return {library.load(path, path.string()), std::nullopt};
-        } catch (const FileReadError& e) {
-            throw SceneError(path.string(), std::string("cannot open the model file: ") + e.what());
-        }
-    }
-    const Scene scene = load_scene(path);
-    const PlacedObject object = find_object(scene, options.value("--object"));
-    return {surface_of(object.object()), object.object().bounds.box};
-}
-
 /// The plane from the options, defaulting to the object's bounds when it has them.
 SlicePlane plane_from(const Options& options, const std::optional<Box3>& bounds) {
     SlicePlane plane;
@@ -121,7 +101,7 @@ int slice_command(const std::vector<std::string>& args) {
         else if (*name != "sign") throw UsageError("unknown shading '" + *name + "' (give sign or value)");
     }
 
-    const SliceInput input = load_input(options.positional()[0], options);
+    const ModelInput input = load_model_input(options.positional()[0], options);
     SliceSettings settings;
     settings.plane = plane_from(options, input.bounds);
     settings.size = options.integer("--size").value_or(settings.size);

@@ -96,3 +96,27 @@ TEST_F(SliceCli, BadArgumentsFailWithAMessageAndNoFile) {
 }
 
 }  // namespace
+
+namespace {
+
+class MeshCli : public zeroset::test::CliTest {};
+
+TEST_F(MeshCli, WritesAClosedMeshOfASceneObjectAndChecksFirst) {
+    const Outcome r = run("mesh '" ZEROSET_SOURCE_DIR "/scenes/examples/torus.zs' -o torus.stl --resolution 32");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("zeroset: wrote torus.stl — "), std::string::npos) << r.err;
+    const auto size = std::filesystem::file_size(dir_ / "torus.stl");
+    EXPECT_GT(size, 84u + 50u * 1000u);
+    EXPECT_EQ((size - 84) % 50, 0u);
+    for (const char* bad : {"'" ZEROSET_SOURCE_DIR "/scenes/examples/torus.zs'",          // no output
+                            "'" ZEROSET_SOURCE_DIR "/scenes/examples/torus.zs' -o t.fbx",  // no such format
+                            "'" ZEROSET_SOURCE_DIR "/scenes/examples/torus.zs' -o t.obj --resolution 100"}) {
+        const Outcome e = run(std::string("mesh ") + bad);
+        EXPECT_EQ(e.status, 2) << bad << ": " << e.err;
+    }
+    const Outcome nowhere = run("mesh '" ZEROSET_SOURCE_DIR "/scenes/examples/torus.zs' -o no/dir/t.obj");
+    EXPECT_EQ(nowhere.status, 1);
+    EXPECT_EQ(dir_.entries().size(), 1u);  // only torus.stl
+}
+
+}  // namespace
