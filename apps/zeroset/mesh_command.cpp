@@ -88,14 +88,7 @@ int mesh_command(const std::vector<std::string>& args) {
     }();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Mesh& mesh = result.mesh;
-    if (!input.to_scene.is_identity()) {
-        for (Vec3d& v : mesh.vertices) v = input.to_scene.transform_point(v);
-        const Mat4& m = input.to_scene;
-        const double handedness =
-            dot(cross(m.transform_vector({1, 0, 0}), m.transform_vector({0, 1, 0})), m.transform_vector({0, 0, 1}));
-        if (handedness < 0.0)  // a mirror turns the triangles inside out
-            for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
-    }
+    transform_mesh(mesh, input.to_scene);
     write_mesh(mesh, output);
     if (!options.has("-q") && !options.has("--quiet")) {
         const PolygonizeStats& s = result.stats;

@@ -19,5 +19,7 @@ void bind_expressions(py::module_& m);
 void bind_scenes(py::module_& m);
 /// render(), slice(), ray() and write_image(): numpy arrays and Python objects out.
 void bind_images(py::module_& m);
+/// mesh(): a surface's triangle mesh as numpy arrays.
+void bind_meshes(py::module_& m);
 
 }  // namespace zeroset::python

@@ -10,4 +10,5 @@ PYBIND11_MODULE(zeroset, m) {
     zeroset::python::bind_expressions(m);
     zeroset::python::bind_scenes(m);
     zeroset::python::bind_images(m);
+    zeroset::python::bind_meshes(m);
 }

@@ -143,3 +143,23 @@ def test_render_errors_are_render_errors():
         zs.render(zs.default_scene(), 8, 8, method="magic")
     with pytest.raises(ValueError, match="reflection_depth must be between 0 and 64"):
         zs.default_scene().reflection_depth = 1000000
+
+
+def test_mesh_gives_a_closed_mesh_as_arrays():
+    vertices, triangles = zs.mesh(x**2 + y**2 + z**2 - 1, resolution=16, box=((-1.5, -1.5, -1.5), (1.5, 1.5, 1.5)))
+    assert vertices.shape[1] == 3 and triangles.shape[1] == 3 and triangles.dtype == np.uint32
+    np.testing.assert_allclose(np.linalg.norm(vertices, axis=1), 1, atol=1e-6)
+    edges = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
+    directed = {tuple(e) for e in edges.tolist()}
+    assert len(directed) == len(edges) and all((b, a) in directed for a, b in directed)  # closed, oriented
+    assert len(vertices) - len(edges) // 2 + len(triangles) == 2  # a sphere
+    # A scene's object: within its bounds, placed as the scene places it; a mirror keeps it outward.
+    scene = zs.Scene()
+    scene.add_object(x**2 + y**2 + z**2 - 1, bounds=((-1.2, -1.2, -1.2), (1.2, 1.2, 1.2)), translate=(5, 0, 0),
+                     scale=(-1, 1, 1))
+    placed, faces = zs.mesh(scene, resolution=16)
+    np.testing.assert_allclose(np.linalg.norm(placed - [5, 0, 0], axis=1), 1, atol=1e-6)
+    a, b, c = (placed[faces[:, i]] - [5, 0, 0] for i in range(3))
+    assert (np.einsum("ij,ij->i", a, np.cross(b, c)) > 0).all()  # every triangle faces outwards
+    with pytest.raises(ValueError, match="power of two"):
+        zs.mesh(x, resolution=100)

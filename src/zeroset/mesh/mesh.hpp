@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "zeroset/math/mat4.hpp"
 #include "zeroset/math/vec3.hpp"
 
 namespace zeroset {
@@ -14,5 +15,9 @@ struct Mesh {
     std::vector<Vec3d> vertices;
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
+
+/// Moves the mesh by an affine map (an object's placement); a map that
+/// mirrors turns the triangles round, so that they still face outwards.
+void transform_mesh(Mesh& mesh, const Mat4& map);
 
 }  // namespace zeroset
