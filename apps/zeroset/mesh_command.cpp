@@ -94,10 +94,11 @@ int mesh_command(const std::vector<std::string>& args) {
         const PolygonizeStats& s = result.stats;
         std::fprintf(stderr,
                      "zeroset: wrote %s — %zu triangles, %zu vertices, resolution %d (cells of %.4g) in %.2f s; "
-                     "%llu octree cells, %llu marched; vertices within %.2g of the surface\n",
+                     "%llu octree cells, %llu marched; vertices within %.2g of the surface%s\n",
                      output.string().c_str(), mesh.triangles.size(), mesh.vertices.size(), settings.resolution,
                      s.cell_size, seconds, static_cast<unsigned long long>(s.cells_visited),
-                     static_cast<unsigned long long>(s.leaf_cells), s.vertex_tolerance);
+                     static_cast<unsigned long long>(s.leaf_cells), s.vertex_tolerance,
+                     input.to_scene.is_identity() ? "" : " (sizes in the object's own units, before its transforms)");
     }
     return 0;
 }

@@ -47,7 +47,7 @@ Options:
   --object NAME       the object to intersect (default: the scene's first)
   --pixel X,Y         the camera's ray through the centre of pixel (X, Y) of
                       the scene's image (its own size; 0,0 is the top left):
-                      what `zeroset render` traces there
+                      what `zeroset render` traces there at 1 spp
   --method M|all      one method or all of them (default: all): auto, sphere,
                       interval, lg, polynomial, newton, regula_falsi,
                       bisection; auto is

@@ -122,3 +122,29 @@ TEST(Polygonize, TheBearIsClosedAndOnItsSurface) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(Polygonize, ZerosOnGridPointsKeepTheMeshClosedAndOriented) {
+    // ±1 at resolution 64: the grid has points at ±0.5, where these are 0.
+    const Box3 unit{{-1, -1, -1}, {1, 1, 1}};
+    EXPECT_EQ(euler_characteristic(mesh_of(sd_box(coordinates(), {0.5, 0.5, 0.5}), unit, 64).mesh), 2);
+    EXPECT_EQ(euler_characteristic(mesh_of(square(x) + square(y) + square(z) - 0.25, unit, 64).mesh), 2);
+    EXPECT_EQ(euler_characteristic(mesh_of(sd_torus(coordinates(), 0.5, 0.25), unit, 64).mesh), 0);
+    const PolygonizeResult plane = mesh_of(x - 0.25, unit, 16);
+    EXPECT_EQ(plane.stats.vertex_tolerance, 0.0);  // every vertex exactly on the plane
+    for (const Vec3d& v : plane.mesh.vertices) EXPECT_EQ(v.x, 0.25);
+}
+
+TEST(Polygonize, AnUndefinedSurfaceIsAnErrorNotAHole) {
+    EXPECT_THROW(mesh_of(sqrt(x) + square(y) + square(z) - 0.5, cube, 32), std::domain_error);
+}
+
+TEST(Polygonize, TheCoarsestResolutionsMeshToo) {
+    EXPECT_GT(mesh_of(square(x) + square(y) + square(z) - 0.5, {{-1, -1, -1}, {1, 1, 1}}, 2).mesh.triangles.size(), 0u);
+    EXPECT_EQ(euler_characteristic(mesh_of(ball, cube, 4).mesh), 2);
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -7,6 +7,8 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <cstdio>
+#include <optional>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -51,6 +53,7 @@ struct Piece {
     std::vector<std::pair<std::uint64_t, Vec3d>> vertices;
     std::vector<std::array<std::uint64_t, 3>> triangles;
     PolygonizeStats stats;
+    std::optional<Vec3d> nan_at;  // where f was found undefined: the piece stops there
 };
 
 /// One thread's octree walk and marching, over the subtrees it is given.
@@ -77,6 +80,7 @@ private:
     /// The octree cell of `size` grid cells at (i, j, k): dropped where f ≠ 0
     /// is proven, split down to blocks, marched there.
     void visit(int i, int j, int k, int size, const Tape& tape, int level) {
+        if (piece_.nan_at) return;
         ++piece_.stats.cells_visited;
         const Box3 cell{grid_point(i, j, k), grid_point(i + size, j + size, k + size)};
         const Interval f = pruner_.evaluate(tape, cell);
@@ -102,7 +106,12 @@ private:
             for (int b = 0; b < n; ++b)
                 for (int a = 0; a < n; ++a) {
                     const Vec3d q = grid_point(i + a, j + b, k + c);
-                    block_values_[at(a, b, c)] = points_(q.x, q.y, q.z);
+                    const double value = points_(q.x, q.y, q.z);
+                    if (std::isnan(value)) {
+                        piece_.nan_at = q;
+                        return;
+                    }
+                    block_values_[at(a, b, c)] = value;
                 }
         for (int c = 0; c < size; ++c)
             for (int b = 0; b < size; ++b)
@@ -134,24 +143,32 @@ private:
         for (int a = 0; a < n_in; ++a) centre_in += p[in[a]] / static_cast<double>(n_in);
         for (int b = 0; b < n_out; ++b) centre_out += p[out[b]] / static_cast<double>(n_out);
         const Vec3d outward = centre_out - centre_in;
-        const auto v = [&](int a, int b) { return vertex(a, b, i, j, k, p, f); };
+        // A triangle's corner on edge (a, b), and that edge's midpoint: the
+        // midpoints never coincide, so they orient the triangle even where
+        // its vertices do (f = 0 at a grid point puts them on the corner).
+        const auto v = [&](int a, int b) { return Corner{vertex(a, b, i, j, k, p, f), (p[a] + p[b]) * 0.5}; };
         if (n_in == 1 || n_out == 1) {
             const int lone = n_in == 1 ? in[0] : out[0];
             const std::array<int, 4>& others = n_in == 1 ? out : in;
             emit({v(lone, others[0]), v(lone, others[1]), v(lone, others[2])}, outward);
         } else {  // two in, two out: a quad, in cyclic order in0-out0, in0-out1, in1-out1, in1-out0
-            const std::uint32_t a = v(in[0], out[0]), b = v(in[0], out[1]), c = v(in[1], out[1]), d = v(in[1], out[0]);
+            const Corner a = v(in[0], out[0]), b = v(in[0], out[1]), c = v(in[1], out[1]), d = v(in[1], out[0]);
             emit({a, b, c}, outward);
             emit({a, c, d}, outward);
         }
     }
 
-    /// Adds the triangle (of slots in piece_.vertices), turned to face `outward` (towards f > 0).
-    void emit(std::array<std::uint32_t, 3> t, const Vec3d& outward) {
-        const auto& vs = piece_.vertices;
-        const Vec3d n = cross(vs[t[1]].second - vs[t[0]].second, vs[t[2]].second - vs[t[0]].second);
+    struct Corner {
+        std::uint32_t slot;  // in piece_.vertices
+        Vec3d midpoint;      // of its edge
+    };
+
+    /// Adds the triangle, turned to face `outward` (towards f > 0).
+    void emit(std::array<Corner, 3> t, const Vec3d& outward) {
+        const Vec3d n = cross(t[1].midpoint - t[0].midpoint, t[2].midpoint - t[0].midpoint);
         if (dot(n, outward) < 0.0) std::swap(t[1], t[2]);
-        piece_.triangles.push_back({vs[t[0]].first, vs[t[1]].first, vs[t[2]].first});
+        const auto& vs = piece_.vertices;
+        piece_.triangles.push_back({vs[t[0].slot].first, vs[t[1].slot].first, vs[t[2].slot].first});
     }
 
     /// The slot of the vertex on the edge between cell corners a and b (one
@@ -175,6 +192,7 @@ private:
     /// Regula falsi (Illinois) on the segment from `in` (f < 0) to `out`
     /// (f ≥ 0): the point of the last bracket's secant.
     Vec3d refine(const Vec3d& in, double f_in, const Vec3d& out, double f_out) {
+        if (f_out == 0.0) return out;  // a zero at the corner itself: exact
         double lo = 0.0, hi = 1.0, f_lo = f_in, f_hi = f_out;
         int side = 0;
         for (int step = 0; step < max_refinements && hi - lo > bracket_goal; ++step) {
@@ -182,6 +200,11 @@ private:
             if (!std::isfinite(t) || t == lo || t == hi) break;
             const Vec3d q = in + (out - in) * t;
             const double f = points_(q.x, q.y, q.z);
+            if (f == 0.0) return q;
+            if (std::isnan(f)) {
+                piece_.nan_at = q;
+                break;
+            }
             if (f < 0.0) {
                 lo = t, f_lo = f;
                 if (side == -1) f_hi *= 0.5;
@@ -239,7 +262,7 @@ PolygonizeResult polygonize(const Tape& tape, const Box3& box, const PolygonizeS
     if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z) || !std::isfinite(box.diagonal()))
         throw std::invalid_argument("the box to mesh must be finite and not empty");
     // The subtrees below the first levels, handed out to the threads in order.
-    const int levels = std::clamp(std::countr_zero(static_cast<unsigned>(r / block)), 0, 2);
+    const int levels = r >= 2 * block ? std::clamp(std::countr_zero(static_cast<unsigned>(r / block)), 0, 2) : 0;
     const int size = r >> levels, per_side = 1 << levels;
     std::vector<Piece> pieces(static_cast<std::size_t>(per_side * per_side * per_side));
     std::atomic<std::size_t> next{0};
@@ -257,6 +280,14 @@ PolygonizeResult polygonize(const Tape& tape, const Box3& box, const PolygonizeS
         for (int t = 1; t < std::min<int>(threads, static_cast<int>(pieces.size())); ++t) pool.emplace_back(work);
         work();
     }
+    for (const Piece& piece : pieces)
+        if (piece.nan_at) {
+            char point[96];
+            std::snprintf(point, sizeof point, "(%.6g, %.6g, %.6g)", piece.nan_at->x, piece.nan_at->y, piece.nan_at->z);
+            throw std::domain_error(std::string("the surface evaluates to NaN at ") + point +
+                                    " — a function outside its domain there (sqrt or log of a negative number, 0/0, "
+                                    "…); a mesh needs f defined throughout the box: fix the expression or the box");
+        }
     PolygonizeResult result = merge(pieces);
     const Vec3d extent = box.size();
     result.stats.cell_size = std::max({extent.x, extent.y, extent.z}) / r;

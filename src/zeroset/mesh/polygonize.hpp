@@ -42,7 +42,8 @@ struct PolygonizeResult {
 };
 
 /// The surface f = 0 within `box`. Throws std::invalid_argument for a
-/// resolution that is not a power of two in range or an empty box.
+/// resolution that is not a power of two in range or an empty box, and
+/// std::domain_error when f is NaN at a point it evaluates (no holes, then).
 PolygonizeResult polygonize(const Tape& tape, const Box3& box, const PolygonizeSettings& settings = {});
 
 }  // namespace zeroset

@@ -76,7 +76,9 @@ std::optional<BoundsCut> sphere_cut(const Tape& tape, const Vec3d& center, doubl
     for (int i = 0; i < sphere_samples; ++i) {
         const double y = 1.0 - 2.0 * (i + 0.5) / sphere_samples;
         const double r = std::sqrt(1.0 - y * y);
-        const Vec3d p = center + Vec3d{r * std::cos(golden * i), y, r * std::sin(golden * i)} * radius;
+        // A hair outside the sphere, so that rounding cannot put a sample inside
+        // a surface that only touches the bounds.
+        const Vec3d p = center + Vec3d{r * std::cos(golden * i), y, r * std::sin(golden * i)} * (radius * (1.0 + 1e-9));
         if (f(p.x, p.y, p.z) < 0.0) return BoundsCut{p, "the bounding sphere"};
     }
     return std::nullopt;
