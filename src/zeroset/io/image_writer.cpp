@@ -12,6 +12,7 @@
 #include "zeroset/io/atomic_file.hpp"
 #include "zeroset/io/exr.hpp"
 #include "zeroset/io/image_shape.hpp"
+#include "zeroset/io/lowercase.hpp"
 #include "zeroset/io/pfm.hpp"
 #include "zeroset/io/png.hpp"
 #include "zeroset/io/ppm.hpp"
@@ -21,12 +22,6 @@ namespace zeroset {
 namespace {
 
 constexpr const char* supported_formats = "use .png, .ppm, .pfm or .exr";
-
-std::string lowercase_ascii(std::string text) {
-    for (char& c : text)
-        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    return text;
-}
 
 /// Encodes, turning the encoders' exceptions into ImageWriteError for `where`.
 std::vector<std::uint8_t> encode_for(const Image& image, ImageFormat format, const std::filesystem::path& where) {

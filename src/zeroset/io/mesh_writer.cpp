@@ -10,6 +10,7 @@
 #include <string>
 
 #include "zeroset/io/atomic_file.hpp"
+#include "zeroset/io/lowercase.hpp"
 
 namespace zeroset {
 
@@ -85,16 +86,10 @@ std::vector<std::uint8_t> encode_ply(const Mesh& mesh) {
     return out;
 }
 
-std::string lowercase(std::string text) {
-    for (char& c : text)
-        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    return text;
-}
-
 }  // namespace
 
 std::optional<MeshFormat> mesh_format_for(const std::filesystem::path& path) {
-    const std::string extension = lowercase(path.extension().string());
+    const std::string extension = lowercase_ascii(path.extension().string());
     if (extension == ".stl") return MeshFormat::Stl;
     if (extension == ".obj") return MeshFormat::Obj;
     if (extension == ".ply") return MeshFormat::Ply;
