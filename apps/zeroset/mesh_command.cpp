@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,25 +30,43 @@ within its bounds and placed as the scene places it.
 
 The bounds are split as an octree; cells where interval arithmetic proves
 f ≠ 0 are dropped, and the rest, down to a grid of RESOLUTION cells a side,
-are marched as tetrahedra. A surface closed within the bounds gives a closed
-(watertight) mesh, every vertex within the reported tolerance of the
-surface; details smaller than a cell may be lost and sharp edges are cut,
-not kept (see docs/meshes.md).
+are meshed. A surface closed within the bounds gives a closed (watertight),
+consistently oriented mesh; details smaller than a cell may be lost (see
+docs/meshes.md).
+
+Methods:
+  dual        dual contouring (the default): one vertex in each cell, where
+              the surface's tangent planes there meet, so sharp corners and
+              edges are kept; every vertex within its cell of the surface
+  tetrahedra  marching tetrahedra: every vertex on the surface to the
+              reported tolerance and the mesh always manifold, but sharp
+              edges are cut
 
 Options:
   -o, --output FILE   the mesh to write: .stl (binary), .obj or .ply (binary)
   --resolution R      cells along each side of the bounds: a power of two
                       from 2 to 4096 (default 128)
+  --method M          dual or tetrahedra (default dual)
   --object NAME       the scene object to mesh (default: the first)
   --region MIN,MAX    for a .vm model: the cube [MIN, MAX]³ (default -1,1)
   -q, --quiet         no summary line
   -h, --help          this text
 )";
 
+/// What the summary can say of where the vertices lie.
+std::string accuracy(MeshMethod method, const PolygonizeStats& s) {
+    char text[160];
+    if (method == MeshMethod::Dual)
+        std::snprintf(text, sizeof text, "dual contouring, every vertex within one cell (%.3g) of a cell the surface crosses", s.cell_size);
+    else
+        std::snprintf(text, sizeof text, "marching tetrahedra, vertices within %.2g of the surface", s.vertex_tolerance);
+    return text;
+}
+
 }  // namespace
 
 int mesh_command(const std::vector<std::string>& args) {
-    const Options options(args, {"-o", "--output", "--resolution", "--object", "--region"},
+    const Options options(args, {"-o", "--output", "--resolution", "--method", "--object", "--region"},
                           {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(mesh_usage, stdout);
@@ -66,6 +85,9 @@ int mesh_command(const std::vector<std::string>& args) {
     }
     PolygonizeSettings settings;
     settings.resolution = options.integer("--resolution").value_or(settings.resolution);
+    if (const auto method = options.choice("--method", "mesh method", std::span<const NamedMeshMethod>(mesh_methods),
+                                           [](const NamedMeshMethod& m) { return m.first; }))
+        settings.method = method->second;
 
     const ModelInput input = load_model_input(options.positional()[0], options);
     Box3 box{{-1, -1, -1}, {1, 1, 1}};
@@ -94,10 +116,10 @@ int mesh_command(const std::vector<std::string>& args) {
         const PolygonizeStats& s = result.stats;
         std::fprintf(stderr,
                      "zeroset: wrote %s — %zu triangles, %zu vertices, resolution %d (cells of %.4g) in %.2f s; "
-                     "%llu octree cells, %llu marched; vertices within %.2g of the surface%s\n",
+                     "%llu octree cells, %llu with the surface; %s%s\n",
                      output.string().c_str(), mesh.triangles.size(), mesh.vertices.size(), settings.resolution,
                      s.cell_size, seconds, static_cast<unsigned long long>(s.cells_visited),
-                     static_cast<unsigned long long>(s.leaf_cells), s.vertex_tolerance,
+                     static_cast<unsigned long long>(s.leaf_cells), accuracy(settings.method, s).c_str(),
                      input.to_scene.is_identity() ? "" : " (sizes in the object's own units, before its transforms)");
     }
     return 0;

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "bindings.hpp"
+#include "values.hpp"
 #include "vec3_caster.hpp"
 #include "zeroset/mesh/polygonize.hpp"
 #include "zeroset/scene/scene.hpp"
@@ -29,10 +30,10 @@ py::tuple mesh_arrays(const Mesh& mesh) {
     return py::make_tuple(vertices, triangles);
 }
 
-Mesh polygonized(const Expr& f, const Box3& box, int resolution, int threads) {
+Mesh polygonized(const Expr& f, const Box3& box, const PolygonizeSettings& settings) {
     const py::gil_scoped_release unlocked;
     try {
-        return polygonize(Tape(f), box, {resolution, threads}).mesh;
+        return polygonize(Tape(f), box, settings).mesh;
     } catch (const std::invalid_argument& e) {
         throw py::value_error(e.what());  // raised once the GIL is back
     }
@@ -44,26 +45,28 @@ void bind_meshes(py::module_& m) {
     m.def(
         "mesh",
         [](const py::object& what, int resolution, std::optional<std::pair<Vec3d, Vec3d>> box,
-           const std::optional<std::string>& object, int threads) {
+           const std::optional<std::string>& object, int threads, const std::string& method) {
+            const PolygonizeSettings settings{resolution, threads,
+                                              named(method, "mesh method", std::span<const NamedMeshMethod>(mesh_methods),
+                                                    [](const NamedMeshMethod& n) { return n.first; }).second};
             if (py::isinstance<Scene>(what)) {
                 if (box) throw py::value_error("a scene's object is meshed within its bounds: give no box");
                 const PlacedObject placed = find_placed_object(what.cast<const Scene&>(), object);
                 if (placed.object().bounds.kind == Bounds::Kind::None)
                     throw py::value_error("the object has no bounds (a plane, say): a mesh needs a finite region");
-                Mesh mesh = polygonized(surface_of(placed.object()), placed.object().bounds.enclosing_box(), resolution,
-                                        threads);
+                Mesh mesh = polygonized(surface_of(placed.object()), placed.object().bounds.enclosing_box(), settings);
                 transform_mesh(mesh, placed.to_scene);
                 return mesh_arrays(mesh);
             }
             if (object) throw py::value_error("object= names an object of a scene, not of an Expr");
             const auto corners = box.value_or(std::pair{Vec3d{-1, -1, -1}, Vec3d{1, 1, 1}});
-            return mesh_arrays(polygonized(what.cast<Expr>(), {corners.first, corners.second}, resolution, threads));
+            return mesh_arrays(polygonized(what.cast<Expr>(), {corners.first, corners.second}, settings));
         },
         py::arg("surface"), py::arg("resolution") = 128, py::arg("box") = py::none(), py::arg("object") = py::none(),
-        py::arg("threads") = 0,
+        py::arg("threads") = 0, py::arg("method") = "dual",
         "A triangle mesh of f = 0: (vertices float64 (n, 3), triangles uint32 (m, 3)), counter-clockwise seen from "
         "outside. `surface` is an Expr (meshed within box=(lo, hi), default the cube ±1) or a Scene (its object, "
-        "within its bounds, in scene coordinates). resolution: cells a side, a power of two (docs/meshes.md).");
+        "within its bounds, in scene coordinates). resolution: cells a side, a power of two; method: 'dual' (dual contouring, keeps sharp edges) or 'tetrahedra' (vertices on the surface) — docs/meshes.md.");
 }
 
 }  // namespace zeroset::python

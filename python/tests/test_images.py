@@ -146,7 +146,8 @@ def test_render_errors_are_render_errors():
 
 
 def test_mesh_gives_a_closed_mesh_as_arrays():
-    vertices, triangles = zs.mesh(x**2 + y**2 + z**2 - 1, resolution=16, box=((-1.5, -1.5, -1.5), (1.5, 1.5, 1.5)))
+    vertices, triangles = zs.mesh(x**2 + y**2 + z**2 - 1, resolution=16, box=((-1.5, -1.5, -1.5), (1.5, 1.5, 1.5)),
+                                  method="tetrahedra")
     assert vertices.shape[1] == 3 and triangles.shape[1] == 3 and triangles.dtype == np.uint32
     np.testing.assert_allclose(np.linalg.norm(vertices, axis=1), 1, atol=1e-6)
     edges = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
@@ -157,9 +158,20 @@ def test_mesh_gives_a_closed_mesh_as_arrays():
     scene = zs.Scene()
     scene.add_object(x**2 + y**2 + z**2 - 1, bounds=((-1.2, -1.2, -1.2), (1.2, 1.2, 1.2)), translate=(5, 0, 0),
                      scale=(-1, 1, 1))
-    placed, faces = zs.mesh(scene, resolution=16)
+    placed, faces = zs.mesh(scene, resolution=16, method="tetrahedra")
     np.testing.assert_allclose(np.linalg.norm(placed - [5, 0, 0], axis=1), 1, atol=1e-6)
     a, b, c = (placed[faces[:, i]] - [5, 0, 0] for i in range(3))
     assert (np.einsum("ij,ij->i", a, np.cross(b, c)) > 0).all()  # every triangle faces outwards
     with pytest.raises(ValueError, match="power of two"):
         zs.mesh(x, resolution=100)
+    with pytest.raises(ValueError, match="unknown mesh method 'duel'.*did you mean 'dual'"):
+        zs.mesh(x, method="duel")
+
+
+def test_mesh_by_dual_contouring_keeps_a_box_corners():
+    vertices, triangles = zs.mesh(zs.sd_box((0.7, 0.5, 0.9)), resolution=16, box=((-1.5,) * 3, (1.5,) * 3))
+    for corner in np.array(np.meshgrid([-0.7, 0.7], [-0.5, 0.5], [-0.9, 0.9])).reshape(3, -1).T:
+        assert np.linalg.norm(vertices - corner, axis=1).min() < 1e-12
+    edges = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
+    directed = {tuple(e) for e in edges.tolist()}
+    assert len(directed) == len(edges) and all((b, a) in directed for a, b in directed)  # closed, oriented

@@ -105,6 +105,13 @@ TEST_F(MeshCli, WritesAClosedMeshOfASceneObjectAndChecksFirst) {
     const Outcome r = run("mesh '" ZEROSET_SOURCE_DIR "/scenes/examples/torus.zs' -o torus.stl --resolution 32");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("zeroset: wrote torus.stl — "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("dual contouring"), std::string::npos) << r.err;  // the default
+    const Outcome tetra = run("mesh '" ZEROSET_SOURCE_DIR "/scenes/examples/torus.zs' -o torus.ply --method tetrahedra");
+    ASSERT_EQ(tetra.status, 0) << tetra.err;
+    EXPECT_NE(tetra.err.find("marching tetrahedra, vertices within"), std::string::npos) << tetra.err;
+    const Outcome unknown = run("mesh '" ZEROSET_SOURCE_DIR "/scenes/examples/torus.zs' -o t.stl --method duel");
+    EXPECT_EQ(unknown.status, 2);
+    EXPECT_NE(unknown.err.find("did you mean 'dual'"), std::string::npos) << unknown.err;
     const auto size = std::filesystem::file_size(dir_ / "torus.stl");
     EXPECT_GT(size, 84u + 50u * 1000u);
     EXPECT_EQ((size - 84) % 50, 0u);
@@ -116,7 +123,7 @@ TEST_F(MeshCli, WritesAClosedMeshOfASceneObjectAndChecksFirst) {
     }
     const Outcome nowhere = run("mesh '" ZEROSET_SOURCE_DIR "/scenes/examples/torus.zs' -o no/dir/t.obj");
     EXPECT_EQ(nowhere.status, 1);
-    EXPECT_EQ(dir_.entries().size(), 1u);  // only torus.stl
+    EXPECT_EQ(dir_.entries().size(), 2u);  // only torus.stl and torus.ply
 }
 
 }  // namespace
