@@ -61,8 +61,10 @@ TEST(BlobKernels, SlopesAndEnclosuresAreRight) {
     }
 }
 
-/// Twelve components in [−1, 1]³: two of them negative, one an ellipsoid.
-std::shared_ptr<const BlobModel> random_blob(BlobKernel kernel, std::uint32_t seed) {
+/// Twelve components in [−1, 1]³: two of them negative, one an ellipsoid,
+/// two cylinders (one along z) unless only round ones are wanted (the
+/// metaballs' quadratic pieces).
+std::shared_ptr<const BlobModel> random_blob(BlobKernel kernel, std::uint32_t seed, bool cylinders = true) {
     std::mt19937 random(seed);
     std::uniform_real_distribution<double> u(-1.0, 1.0), radius(0.5, 0.9);
     std::vector<BlobComponent> components;
@@ -73,6 +75,9 @@ std::shared_ptr<const BlobModel> random_blob(BlobKernel kernel, std::uint32_t se
         c.strength = i < 2 ? -0.5 : 1.0;
         c.blobbiness = -2.0;
         if (i == 5) c.shape = Mat4::rotate_xyz_degrees({30, 40, 0}) * Mat4::scale({1.0, 0.4, 1.6});
+        if (cylinders && i == 6) c.end = c.center + Vec3d{0.8, -0.3, 0.5};
+        if (cylinders && i == 7) c.end = c.center + Vec3d{0.0, 0.0, 0.9};
+        if (c.end) c.radius *= 0.6;
         components.push_back(c);
     }
     return std::make_shared<const BlobModel>(kernel, 0.5, std::move(components));
@@ -207,12 +212,44 @@ INSTANTIATE_TEST_SUITE_P(EveryKernel, BlobAgainstExpression,
                          ::testing::Values(BlobKernel::Blinn, BlobKernel::Metaball, BlobKernel::Soft, BlobKernel::PovRay),
                          [](const auto& p) { return std::string(blob_kernel_info(p.param).name); });
 
+TEST(Blob, ACylinderIsTheKernelOfTheDistanceToItsSegment) {
+    // POV-Ray's kernel, strength 2, threshold 1: the surface is where the
+    // distance d to the segment has (1 − d²/R²)² = 1/2.
+    BlobComponent c;
+    c.center = {0, 0, -1};
+    c.end = Vec3d{0, 0, 1};
+    c.radius = 1.0;
+    c.strength = 2.0;
+    const auto model = std::make_shared<const BlobModel>(BlobKernel::PovRay, 1.0, std::vector{c});
+    const Blob blob(BlobDescription{"tube", model, no_material, 1e-9, 1});
+    const double d = std::sqrt(1.0 - std::sqrt(0.5));
+    TraceScratch scratch(1);
+    // Across the body, along the axis (the body's u constant on the ray),
+    // into a round end, and slantwise through all three parts.
+    const auto t_of = [&](const Ray& ray) { return blob.first_hit(ray, 0.0, 1e9, scratch).value().t; };
+    EXPECT_NEAR(t_of({{-5, 0, 0.3}, {1, 0, 0}}), 5.0 - d, 1e-12);
+    EXPECT_NEAR(t_of({{0.2, 0, -5}, {0, 0, 1}}), 4.0 - std::sqrt(d * d - 0.04), 1e-12);
+    EXPECT_NEAR(t_of({{0, 0, 5}, {0, 0, -1}}), 4.0 - d, 1e-12);
+    const Vec3d slant = normalize(Vec3d{0.3, 0.1, 1.0});
+    const Ray through{Vec3d{0.05, 0.02, 0} - 4.0 * slant, slant};
+    const double t = t_of(through);
+    const Vec3d p = through.at(t);
+    EXPECT_NEAR(model->u_at(0, p), 1.0 - std::sqrt(0.5), 1e-12);
+    EXPECT_NEAR(blob.value_at(p), 0.0, 1e-12);
+    // The normal: away from the nearest point of the segment.
+    const Vec3d side{-5, 0, 0.3};
+    const auto hit = blob.first_hit({side, {1, 0, 0}}, 0.0, 1e9, scratch).value();
+    const Vec3d n = blob.local_normal(hit.surface, scratch);
+    EXPECT_NEAR(n.x, -1.0, 1e-12);
+    EXPECT_NEAR(n.z, 0.0, 1e-12);
+}
+
 TEST(Blob, MetaballQuadraticsApproximateTheExactKernel) {
     // The survey's §3.1 approximation against the exact metaball kernel on
     // the same blob: how far the first hits move, and how many rays change
     // between hit and miss (near the silhouette, where the field barely
     // reaches the threshold).
-    const auto model = random_blob(BlobKernel::Metaball, 11);
+    const auto model = random_blob(BlobKernel::Metaball, 11, false);
     const Blob exact(BlobDescription{"exact", model, no_material, 1e-9, 1, false});
     const Blob approximate(BlobDescription{"quadratics", model, no_material, 1e-9, 1, true});
     TraceScratch scratch(0);
@@ -259,7 +296,7 @@ TEST(Blob, NoFirstHitLiesBehindAPartOfTheSolid) {
     };
     for (const Case c : {Case{BlobKernel::Blinn, 1e-2, false}, Case{BlobKernel::Metaball, 1e-7, true},
                          Case{BlobKernel::PovRay, 1e-7, false}}) {
-        const auto model = random_blob(c.kernel, 17);
+        const auto model = random_blob(c.kernel, 17, !c.quadratics);
         const Blob blob(BlobDescription{"blob", model, no_material, c.tolerance, 1, c.quadratics});
         TraceScratch scratch(0);
         std::mt19937 random(4);
@@ -294,7 +331,7 @@ TEST(Blob, MetaballQuadraticsLetARayLeaveAlongTheNormal) {
     // may put that point inside by the approximation's error: its first hit
     // is its first entry. (Oblique rays from the surface may still meet
     // their own approximation of it: docs/blobs.md.)
-    const auto model = random_blob(BlobKernel::Metaball, 11);
+    const auto model = random_blob(BlobKernel::Metaball, 11, false);
     const Blob blob(BlobDescription{"q", model, no_material, 1e-7, 1, true});
     TraceScratch scratch(0);
     std::mt19937 random(2);
@@ -353,6 +390,15 @@ TEST(Blob, RefusesWhatCannotBeTraced) {
     c.strength = -1.0;  // only negative: no solid
     const auto negative = std::make_shared<const BlobModel>(BlobKernel::PovRay, 1.0, std::vector{c});
     EXPECT_THROW(Blob(BlobDescription{"b", negative, no_material, 1e-7, 1}), std::invalid_argument);
+    c.strength = 1.0;
+    c.end = c.center;  // a cylinder of no length
+    EXPECT_THROW(BlobModel(BlobKernel::PovRay, 1.0, {c}), std::invalid_argument);
+    c.end = c.center + Vec3d{1, 0, 0};
+    c.shape = Mat4::scale({1.0, 2.0, 1.0});  // a cylinder takes no shape
+    EXPECT_THROW(BlobModel(BlobKernel::PovRay, 1.0, {c}), std::invalid_argument);
+    c.shape = Mat4::identity();
+    const auto tube = std::make_shared<const BlobModel>(BlobKernel::Metaball, 1.0, std::vector{c});
+    EXPECT_THROW(Blob(BlobDescription{"b", tube, no_material, 1e-7, 1, true}), std::invalid_argument);  // quadratics
 }
 
 }  // namespace

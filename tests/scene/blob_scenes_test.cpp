@@ -77,6 +77,16 @@ TEST(BlobScenes, ReadsKernelsComponentsAndTheirShapes) {
     // Its bounds are its positive components' reach: the ellipsoids reach y = ±2.
     EXPECT_NEAR(placed.object().bounds.box.hi.y, 2.0, 1e-9);
     EXPECT_NEAR(placed.object().bounds.box.lo.x, 0.0, 1e-9);
+    // A cylinder: its ends, and its bounds the spheres about them.
+    const Scene tube = parse("blob { component { from (0, 0, 0) to (4, 0, 0) radius 0.5 } }");
+    const PlacedObject t = placed_objects(tube).at(0);
+    const BlobComponent& c = t.object().blob->components().at(0);
+    ASSERT_TRUE(c.is_cylinder());
+    EXPECT_EQ(c.center, (Vec3d{0, 0, 0}));
+    EXPECT_EQ(*c.end, (Vec3d{4, 0, 0}));
+    EXPECT_NEAR(t.object().bounds.box.lo.x, -0.5, 1e-9);
+    EXPECT_NEAR(t.object().bounds.box.hi.x, 4.5, 1e-9);
+    EXPECT_NEAR(t.object().bounds.box.hi.z, 0.5, 1e-9);
 }
 
 TEST(BlobScenes, BadBlobsGetClearErrors) {
@@ -101,6 +111,16 @@ TEST(BlobScenes, BadBlobsGetClearErrors) {
     EXPECT_EQ(error_of("blob { quadratics on kernel metaball component { } }"), "");
     EXPECT_EQ(error_of("blob { component { center (1e308, 0, 0)  radius 1e308 } component { center (-1e308, 0, 0) } }"),
               "scene.zs:1:1: the blob's reach is wider than a double can measure");  // any order before the components
+    EXPECT_EQ(error_of("blob { component { from (0, 0, 0) radius 2 } }"),
+              "scene.zs:1:20: a cylinder component needs both ends: from (x, y, z) to (x, y, z)");
+    EXPECT_EQ(error_of("blob { component { center (1, 0, 0) from (0, 0, 0) to (1, 0, 0) } }"),
+              "scene.zs:1:20: a cylinder component has ends (from, to), not a center");
+    EXPECT_EQ(error_of("blob { component { from (0, 0, 0) to (1, 0, 0) scale 2 } }"),
+              "scene.zs:1:48: a cylinder component takes no transform: move its ends instead");
+    EXPECT_EQ(error_of("blob { component { from (0, 0, 0) to (0, 0, 0) } }"),
+              "scene.zs:1:35: the cylinder's ends must differ (a sphere has a center)");
+    EXPECT_EQ(error_of("blob { kernel metaball quadratics on component { from (0, 0, 0) to (1, 0, 0) } }"),
+              "scene.zs:1:24: quadratics (the survey's quadratic pieces) is for round components, not cylinders");
     EXPECT_EQ(error_of("blob { component { radius 1e-310 } }"),
               "scene.zs:1:1: blob: component 1: its radius and shape map it outside what a double holds (radius 1e-310)");
 }

@@ -36,8 +36,12 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
         const BlobComponent& c = m.components()[i];
         const double reach = m.reach(i, description_.tolerance);
         if (!(reach > 0.0)) continue;  // a Gaussian too weak to count anywhere
-        const bool sphere = c.shape == Mat4::identity();
-        components_.push_back({static_cast<std::uint32_t>(i), sphere, reach, c.strength, c.blobbiness, c.center, 1.0 / c.radius});
+        const bool sphere = c.shape == Mat4::identity() && !c.is_cylinder();
+        if (c.is_cylinder() && description_.metaball_quadratics)
+            throw std::invalid_argument("component " + std::to_string(i + 1) +
+                                        ": the quadratic pieces are for round components, not cylinders");
+        components_.push_back({static_cast<std::uint32_t>(i), sphere, c.is_cylinder(), reach, c.strength, c.blobbiness,
+                               c.center, 1.0 / c.radius, c.end.value_or(c.center)});
         boxes.push_back(m.reach_box(i, reach));
         if (!is_bounded(boxes.back()) || !std::isfinite(boxes.back().diagonal()))
             throw std::invalid_argument("component " + std::to_string(i + 1) + ": its reach is wider than a double can measure");
@@ -63,36 +67,79 @@ BlobScratch& Blob::scratch_for(TraceScratch& scratch) const {
     return *slot;
 }
 
-std::optional<KernelOnRay> Blob::on_ray(const Ray& ray, std::uint32_t i) const {
-    const Component& c = components_[i];
+std::optional<KernelOnRay> Blob::part_on_ray(const Ray& ray, const Component& c, bool own_map, const Vec3d& center,
+                                             Span part) const {
     Vec3d q0, qd;
-    if (c.sphere) {
-        q0 = (ray.origin - c.center) * c.inverse_radius;
-        qd = ray.dir * c.inverse_radius;
-    } else {
+    if (own_map) {
         q0 = to_kernel(c).transform_point(ray.origin);
         qd = to_kernel(c).transform_vector(ray.dir);
-    }
-    const std::optional<Span> reach = reach_on_ray(q0, qd, c.reach);
-    if (!reach) return std::nullopt;
-    KernelOnRay k{q0, qd, 0.0, 0.0, c.strength, c.blobbiness, reach->t0, reach->t1, i};
-    if (c.sphere) {
-        const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
-        constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
-        k.q0_error = u4 * (largest(ray.origin) + largest(c.center)) * c.inverse_radius;
-        k.qd_error = u4 * largest(ray.dir) * c.inverse_radius;
     } else {
+        q0 = (ray.origin - center) * c.inverse_radius;
+        qd = ray.dir * c.inverse_radius;
+    }
+    std::optional<Span> reach;
+    if (dot(qd, qd) > 0.0) {
+        reach = reach_on_ray(q0, qd, c.reach);
+    } else if (dot(q0, q0) <= c.reach) {  // a ray along a cylinder's axis: the body's u is constant
+        reach = Span{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    }
+    if (!reach) return std::nullopt;
+    const double t_in = std::max(reach->t0, part.t0), t_out = std::min(reach->t1, part.t1);
+    if (!(t_in <= t_out)) return std::nullopt;
+    KernelOnRay k{q0, qd, 0.0, 0.0, c.strength, c.blobbiness, t_in, t_out, static_cast<std::uint32_t>(&c - components_.data())};
+    if (own_map) {
         k.q0_error = mapping_error(to_kernel(c), ray.origin, true);
         k.qd_error = mapping_error(to_kernel(c), ray.dir, false);
+    } else {
+        const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
+        constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
+        k.q0_error = u4 * (largest(ray.origin) + largest(center)) * c.inverse_radius;
+        k.qd_error = u4 * largest(ray.dir) * c.inverse_radius;
     }
     return k;
+}
+
+template <class Add>
+void Blob::on_ray(const Ray& ray, std::uint32_t i, Add&& add) const {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    const Component& c = components_[i];
+    if (!c.cylinder) {
+        if (const auto k = part_on_ray(ray, c, !c.sphere, c.center, {-infinity, infinity})) add(*k);
+        return;
+    }
+    // The ray's place along the axis, s(t) = s0 + t·sd: the body for s in
+    // [0, 1], the round ends beyond. Where they meet, the two kernels agree
+    // to first order (distance to the end = distance to the axis), so the
+    // rounding of these bounds changes f by its square: far below the
+    // segment solver's rounding radius.
+    const Vec3d w = c.end - c.center;
+    const double s0 = dot(ray.origin - c.center, w) / dot(w, w), sd = dot(ray.dir, w) / dot(w, w);
+    Span start{-infinity, infinity}, body = start, finish = start;  // where s ≤ 0, 0 ≤ s ≤ 1, s ≥ 1
+    if (sd != 0.0) {
+        const double at_start = -s0 / sd, at_end = (1.0 - s0) / sd;
+        body = {std::min(at_start, at_end), std::max(at_start, at_end)};
+        start = sd > 0.0 ? Span{-infinity, at_start} : Span{at_start, infinity};
+        finish = sd > 0.0 ? Span{at_end, infinity} : Span{-infinity, at_end};
+    } else {
+        const Span none{infinity, -infinity};
+        if (!(s0 <= 0.0)) start = none;
+        if (!(s0 >= 0.0 && s0 <= 1.0)) body = none;
+        if (!(s0 >= 1.0)) finish = none;
+    }
+    // In the order the ray meets them, so that the events come sorted when they can.
+    const bool forwards = sd >= 0.0;
+    if (const auto k = part_on_ray(ray, c, false, forwards ? c.center : c.end, forwards ? start : finish)) add(*k);
+    if (const auto k = part_on_ray(ray, c, true, c.center, body)) add(*k);
+    if (const auto k = part_on_ray(ray, c, false, forwards ? c.end : c.center, forwards ? finish : start)) add(*k);
 }
 
 void Blob::gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, TraceScratch& scratch) const {
     s.kernels.clear();
     s.events.clear();
     bvh_->traverse(ray, t_min, t_max, [&](std::uint32_t i, double limit) {
-        if (const auto k = on_ray(ray, i); k && k->t_out >= t_min && k->t_in <= t_max) add_events(*k, t_min, t_max, s);
+        on_ray(ray, i, [&](const KernelOnRay& k) {
+            if (k.t_out >= t_min && k.t_in <= t_max) add_events(k, t_min, t_max, s);
+        });
         return limit;  // every component along the ray: the events need them all
     });
     scratch.counters.blob_kernels += s.kernels.size();
@@ -226,12 +273,13 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
     };
     bvh_->traverse_in_order(ray, span->t0, span->t1, s.queue, [&](std::uint32_t i, double limit) {
         if (i == Bvh::frontier) return advance(limit) ? span->t1 : -std::numeric_limits<double>::infinity();
-        if (const auto k = on_ray(ray, i); k && k->t_out >= span->t0 && k->t_in <= span->t1) {
+        on_ray(ray, i, [&](const KernelOnRay& k) {
+            if (!(k.t_out >= span->t0 && k.t_in <= span->t1)) return;
             const std::size_t before = s.events.size();
-            add_events(*k, span->t0, span->t1, s);
+            add_events(k, span->t0, span->t1, s);
             for (std::size_t j = before; j < s.events.size(); ++j)
                 std::push_heap(s.events.begin(), s.events.begin() + static_cast<std::ptrdiff_t>(j) + 1, later);
-        }
+        });
         return limit;
     });
     scratch.counters.blob_kernels += s.kernels.size();
@@ -288,8 +336,7 @@ void Blob::components_at(const Vec3d& p, Visit&& visit) const {
 double Blob::value_at(const Vec3d& p) const {
     double field = 0.0;
     components_at(p, [&](const Component& c) {
-        const Vec3d q = to_kernel(c).transform_point(p);
-        const double u = dot(q, q);
+        const double u = model().u_at(c.index, p);
         if (u <= c.reach) field += c.strength * kernel_value_at(settings_.kernel, u, c.blobbiness);
     });
     return settings_.threshold - field;
@@ -302,6 +349,13 @@ Vec3d Blob::gradient_at(const Vec3d& p) const {
 }
 
 Vec3d Blob::gradient_from(const Vec3d& p, const Component& c) const {
+    if (c.cylinder) {  // q = (p − nearest)/R, so ∇u = 2q/R
+        const Vec3d w = c.end - c.center;
+        const Vec3d q = (p - (c.center + std::clamp(dot(p - c.center, w) / dot(w, w), 0.0, 1.0) * w)) * c.inverse_radius;
+        const double u = dot(q, q);
+        if (u > c.reach) return {};
+        return -(c.strength * kernel_at(settings_.kernel, u, c.blobbiness).slope * 2.0 * c.inverse_radius) * q;
+    }
     const Vec3d q = to_kernel(c).transform_point(p);
     const double u = dot(q, q);
     if (u > c.reach) return {};

@@ -92,15 +92,26 @@ private:
     struct Component {
         std::uint32_t index;  // in the model (its to_kernel map)
         bool sphere;          // its map is (p − center)/R: applied without the matrix
+        bool cylinder;        // from center to end: a body and two round ends
         double reach;         // u up to which it counts
         double strength;
         double blobbiness;
         Vec3d center;
         double inverse_radius;
+        Vec3d end;            // a cylinder's
     };
     [[nodiscard]] const Mat4& to_kernel(const Component& c) const { return model().to_kernel(c.index); }
-    /// The component as the ray sees it, if the ray comes within its reach.
-    [[nodiscard]] std::optional<KernelOnRay> on_ray(const Ray& ray, std::uint32_t i) const;
+    /// Calls add(KernelOnRay) for the component as the ray sees it where the
+    /// ray comes within its reach: once, or for a cylinder once for each of
+    /// its parts the ray meets (an end, the body, the other end — the
+    /// kernel of the distance to the segment is, piece by piece along the
+    /// ray, the kernel of a distance to a point or to the axis line).
+    template <class Add>
+    void on_ray(const Ray& ray, std::uint32_t i, Add&& add) const;
+    /// The kernel along the ray of the point map q = (p − center)/R, or of
+    /// the component's own map, within reach and the span `part`.
+    [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Ray& ray, const Component& c, bool own_map,
+                                                         const Vec3d& center, Span part) const;
 
     BlobScratch& scratch_for(TraceScratch& scratch) const;
     /// Adds a component the ray meets to s.kernels and its events, clipped to [t_min, t_max], to s.events.

@@ -2,11 +2,14 @@
 // and the field written as an expression.
 #include "zeroset/expr/blob_model.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+
+#include "zeroset/expr/functions.hpp"
 
 namespace zeroset {
 
@@ -94,6 +97,37 @@ Expr kernel_expression(BlobKernel kernel, const Expr& u, double blobbiness) {
     return Expr();
 }
 
+/// A cylinder's body map: q = (p − a − ((p − a)·w / w·w)·w) / R for the
+/// axis w from its start a to its end.
+Mat4 cylinder_body_map(const BlobComponent& c, const std::string& which) {
+    const Vec3d& end = *c.end;
+    if (!(std::isfinite(end.x) && std::isfinite(end.y) && std::isfinite(end.z)))
+        throw std::invalid_argument(which + "the cylinder's end must be finite");
+    const Vec3d w = end - c.center;
+    const double length2 = dot(w, w);
+    if (!(length2 > 0.0) || !std::isfinite(length2))
+        throw std::invalid_argument(which + "the cylinder's ends must differ (a sphere has one center)");
+    if (!(c.shape == Mat4::identity()))
+        throw std::invalid_argument(which + "a cylinder takes no shape: move its ends instead");
+    Mat4 map = Mat4::identity();
+    for (std::size_t r = 0; r < 3; ++r) {
+        for (std::size_t k = 0; k < 3; ++k)
+            map.m[r][k] = ((r == k ? 1.0 : 0.0) - w[static_cast<int>(r)] * w[static_cast<int>(k)] / length2) / c.radius;
+        map.m[r][3] = 0.0;
+    }
+    const Vec3d offset = map.transform_vector(c.center);
+    for (std::size_t r = 0; r < 3; ++r) map.m[r][3] = -offset[static_cast<int>(r)];
+    if (!map.is_finite()) throw std::invalid_argument(which + "the cylinder's radius maps it outside what a double holds");
+    return map;
+}
+
+/// The point of the segment [a, b] nearest p.
+Vec3d nearest_on_segment(const Vec3d& a, const Vec3d& b, const Vec3d& p) {
+    const Vec3d w = b - a;
+    const double s = std::clamp(dot(p - a, w) / dot(w, w), 0.0, 1.0);
+    return a + s * w;
+}
+
 /// The terms summed pairwise, so that a blob of n components is an
 /// expression of depth log₂ n rather than n.
 Expr balanced_sum(std::vector<Expr>& terms, std::size_t lo, std::size_t hi) {
@@ -159,6 +193,10 @@ BlobModel::BlobModel(BlobKernel kernel, double threshold, std::vector<BlobCompon
             throw std::invalid_argument(which + "its peak, strength × e^(-blobbiness), overflows a double");
         if (!(std::isfinite(c.center.x) && std::isfinite(c.center.y) && std::isfinite(c.center.z)))
             throw std::invalid_argument(which + "the center must be finite");
+        if (c.is_cylinder()) {
+            to_kernel_.push_back(cylinder_body_map(c, which));
+            continue;
+        }
         const std::optional<Mat4> inverse = c.shape.inverse();
         if (!c.shape.is_finite() || !inverse || !(c.shape.squareness() > 1e-12))
             throw std::invalid_argument(which + "the shape is singular (it flattens the component)");
@@ -182,7 +220,23 @@ double BlobModel::reach(std::size_t i, double tolerance) const {
     return 1.0 + std::log(tolerance * threshold_ / std::abs(c.strength)) / c.blobbiness;
 }
 
+double BlobModel::u_at(std::size_t i, const Vec3d& p) const {
+    const BlobComponent& c = components_[i];
+    if (c.is_cylinder()) {
+        const Vec3d q = (p - nearest_on_segment(c.center, *c.end, p)) / c.radius;
+        return dot(q, q);
+    }
+    const Vec3d q = to_kernel_[i].transform_point(p);
+    return dot(q, q);
+}
+
 Box3 BlobModel::reach_box(std::size_t i, double reach) const {
+    const BlobComponent& c = components_[i];
+    if (c.is_cylinder()) {  // the spheres about its ends, and everything between
+        const double r = std::sqrt(reach) * c.radius * (1.0 + 1e-12);
+        const Vec3d half{r, r, r};
+        return {min(c.center, *c.end) - half, max(c.center, *c.end) + half};
+    }
     // p = M⁻¹(q − m) over |q| ≤ √reach: the center ± √reach times the rows' lengths.
     const Mat4 from_kernel = *to_kernel_[i].inverse();
     const Vec3d center = from_kernel.transform_point({0.0, 0.0, 0.0});
@@ -211,6 +265,15 @@ Expr BlobModel::field_expression() const {
     terms.reserve(components_.size());
     const Expr x = var_x(), y = var_y(), z = var_z();
     for (std::size_t i = 0; i < components_.size(); ++i) {
+        const BlobComponent& c = components_[i];
+        if (c.is_cylinder()) {  // |p − a − s·w|² / R² with s = clamp((p − a)·w / w·w, 0, 1)
+            const Vec3d w = *c.end - c.center;
+            const Expr dx = x - c.center.x, dy = y - c.center.y, dz = z - c.center.z;
+            const Expr s = clamp((dx * w.x + dy * w.y + dz * w.z) / dot(w, w), Expr(0.0), Expr(1.0));
+            const Expr u = (square(dx - s * w.x) + square(dy - s * w.y) + square(dz - s * w.z)) / (c.radius * c.radius);
+            terms.push_back(c.strength * kernel_expression(kernel_, u, c.blobbiness));
+            continue;
+        }
         const Mat4& m = to_kernel_[i];
         Expr u;
         for (int row = 0; row < 3; ++row) {

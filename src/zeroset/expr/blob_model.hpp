@@ -78,6 +78,12 @@ struct BlobComponent {
     /// before it moves to its center (an ellipsoid's axes); the identity for
     /// a sphere.
     Mat4 shape = Mat4::identity();
+    /// A cylinder (POV-Ray's cylinder component): the segment from `center`
+    /// to `end`, u the squared distance to it over R² — round at both ends,
+    /// where it is the sphere about the end. A cylinder has no shape.
+    std::optional<Vec3d> end;
+
+    [[nodiscard]] bool is_cylinder() const { return end.has_value(); }
 };
 
 class BlobModel {
@@ -85,7 +91,8 @@ public:
     /// Throws std::invalid_argument for a threshold that is not finite and
     /// positive, no components, or a component with a radius that is not
     /// finite and positive, a zero or non-finite strength, a blobbiness that
-    /// is not negative (blinn), or a singular shape.
+    /// is not negative (blinn), a singular shape, or a cylinder whose ends
+    /// coincide or that has a shape.
     BlobModel(BlobKernel kernel, double threshold, std::vector<BlobComponent> components);
 
     [[nodiscard]] BlobKernel kernel() const { return kernel_; }
@@ -93,8 +100,13 @@ public:
     [[nodiscard]] const std::vector<BlobComponent>& components() const { return components_; }
 
     /// The map from blob space to component i's kernel space, where u = |q|²
-    /// (its center at the origin, its radius 1): q = M·p + m.
+    /// (its center at the origin, its radius 1): q = M·p + m. For a
+    /// cylinder, the map to its body's: q is the offset from the axis line
+    /// over R (a projection, not invertible), which holds between the
+    /// planes through its ends.
     [[nodiscard]] const Mat4& to_kernel(std::size_t i) const { return to_kernel_[i]; }
+    /// u of component i at p (beyond its reach too).
+    [[nodiscard]] double u_at(std::size_t i, const Vec3d& p) const;
 
     /// u up to which component i counts: 1 where a finite kernel ends; for
     /// Blinn's Gaussian, where |s|·K falls to tolerance·T (≤ 0: nowhere).

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <optional>
 
 #include "zeroset/scene/scene_error.hpp"
 #include "zeroset/scene/scene_parser.hpp"
@@ -16,7 +18,7 @@ namespace {
 
 constexpr std::array<std::string_view, 9> blob_keys{"kernel",  "threshold", "tolerance", "quadratics", "component",
                                                     "method",  "normals",   "partition", "material"};
-constexpr std::array<std::string_view, 4> component_keys{"center", "radius", "strength", "blobbiness"};
+constexpr std::array<std::string_view, 6> component_keys{"center", "from", "to", "radius", "strength", "blobbiness"};
 
 }  // namespace
 
@@ -48,6 +50,9 @@ SceneNodePtr SceneParser::blob(const Token& keyword) {
     if (node->object.blob_quadratics && reading.kernel != BlobKernel::Metaball)
         in_->fail(reading.seen.at("quadratics"),
                   "quadratics (the survey's approximation by quadratic pieces) is for the metaball kernel only");
+    if (node->object.blob_quadratics &&
+        std::any_of(reading.components.begin(), reading.components.end(), [](const BlobComponent& c) { return c.is_cylinder(); }))
+        in_->fail(reading.seen.at("quadratics"), "quadratics (the survey's quadratic pieces) is for round components, not cylinders");
     Object& object = node->object;
     try {
         object.blob = std::make_shared<const BlobModel>(reading.kernel, reading.threshold, std::move(reading.components));
@@ -128,15 +133,24 @@ bool SceneParser::blob_entry(BlobReading& reading) {
 BlobComponent SceneParser::blob_component(const Token& keyword, BlobKernel kernel) {
     BlobComponent c;
     SceneNode shape;  // the component's transforms, checked as a node's are
+    std::map<std::string_view, SourceLocation> placed;  // center, from, to, transforms: where given
+    std::optional<Vec3d> from, to;
     std::vector<std::string_view> keys(component_keys.begin(), component_keys.end());
     keys.insert(keys.end(), transform_keys.begin(), transform_keys.end());
     block(
         keyword, keys,
         [&](const Token& key) {
+            if (key.text == "center" || key.text == "from" || key.text == "to" || is_one_of(transform_keys, key))
+                placed.emplace(is_one_of(transform_keys, key) ? std::string_view("transform") : std::string_view(key.text),
+                               key.where);
             if (is_one_of(transform_keys, key)) {
                 add_transform(key, shape);
             } else if (key.text == "center") {
                 c.center = vector("the center").value;
+            } else if (key.text == "from") {
+                from = vector("the cylinder's start").value;
+            } else if (key.text == "to") {
+                to = vector("the cylinder's end").value;
             } else if (key.text == "radius") {
                 const auto [r, where] = number("the radius");
                 if (!(r > 0.0)) in_->fail(where, "the radius must be positive");
@@ -154,6 +168,17 @@ BlobComponent SceneParser::blob_component(const Token& keyword, BlobKernel kerne
         },
         transform_keys);
     c.shape = shape.transform;
+    if (from || to) {  // a cylinder: both ends, and nothing that places it otherwise
+        const auto given = [&](std::string_view k) { return placed.count(k) != 0; };
+        if (!from || !to)
+            in_->fail(placed.at(from ? "from" : "to"), "a cylinder component needs both ends: from (x, y, z) to (x, y, z)");
+        if (given("center")) in_->fail(placed.at("center"), "a cylinder component has ends (from, to), not a center");
+        if (given("transform"))
+            in_->fail(placed.at("transform"), "a cylinder component takes no transform: move its ends instead");
+        if (*from == *to) in_->fail(placed.at("to"), "the cylinder's ends must differ (a sphere has a center)");
+        c.center = *from;
+        c.end = to;
+    }
     return c;
 }
 
