@@ -35,9 +35,10 @@ consistently oriented mesh; details smaller than a cell may be lost (see
 docs/meshes.md).
 
 Methods:
-  dual        dual contouring (the default): one vertex in each cell, where
-              the surface's tangent planes there meet, so sharp corners and
-              edges are kept; every vertex within its cell of the surface
+  dual        dual contouring (the default): a vertex for each patch of
+              surface in a cell, where its tangent planes meet, so sharp
+              corners and edges are kept; every vertex within one cell of a
+              cell the surface crosses
   tetrahedra  marching tetrahedra: every vertex on the surface to the
               reported tolerance and the mesh always manifold, but sharp
               edges are cut

@@ -93,3 +93,26 @@ TEST(CellPatches, FlippingAWrappedFaceSplitsItsPatch) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST(CellPatches, FlipsNeverLeaveAFaceWrapped) {
+    // Every sign pattern, every set of the faces its surface wraps round:
+    // flipped, none of them wraps any more, no other face starts to, and a
+    // cell never has more than four patches — so two cells that flip their
+    // shared face alike leave it wrapped from neither side.
+    for (int signs = 0; signs < 256; ++signs) {
+        const cell::Patches& plain = cell::unflipped[static_cast<std::size_t>(signs)];
+        int wrapped = 0;
+        for (int face = 0; face < 6; ++face) wrapped |= cell::wraps_round(plain, signs, face) ? 1 << face : 0;
+        for (int flipped = wrapped; flipped > 0; flipped = (flipped - 1) & wrapped) {
+            const cell::Patches p = cell::patches_of(signs, flipped);
+            EXPECT_LE(p.count, 4) << signs;
+            for (int face = 0; face < 6; ++face) EXPECT_FALSE(cell::wraps_round(p, signs, face)) << signs << " face " << face;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -4,6 +4,7 @@
 #include "zeroset/mesh/dual_contouring.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -17,6 +18,24 @@ namespace {
 std::uint64_t point_key(std::int64_t i, std::int64_t j, std::int64_t k, int resolution) {
     const auto n = static_cast<std::uint64_t>(resolution) + 1;
     return static_cast<std::uint64_t>(i) + n * (static_cast<std::uint64_t>(j) + n * static_cast<std::uint64_t>(k));
+}
+
+/// Removes the vertices no triangle uses — those of cells at the box's
+/// boundary whose quads the box cut — keeping the others' order.
+void drop_unused_vertices(Mesh& mesh) {
+    constexpr auto unused = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> index(mesh.vertices.size(), unused);
+    for (const auto& t : mesh.triangles)
+        for (const std::uint32_t v : t) index[v] = 0;
+    std::uint32_t kept = 0;
+    for (std::size_t v = 0; v < index.size(); ++v)
+        if (index[v] == 0) {
+            index[v] = kept;
+            mesh.vertices[kept++] = mesh.vertices[v];
+        }
+    mesh.vertices.resize(kept);
+    for (auto& t : mesh.triangles)
+        for (std::uint32_t& v : t) v = index[v];
 }
 
 }  // namespace
@@ -54,9 +73,10 @@ int DualMesher::corner_signs(const OctreeWalk::Block& block, int a, int b, int c
         double f;
         if (std::min({p, q, r}) >= 0 && std::max({p, q, r}) <= block.size) {
             f = block.value(p, q, r);
-        } else {  // beyond the block, where its pruned tape need not hold: the full tape, which gives the same value
+        } else {  // beyond the block, where its pruned tape need not hold: the full tape, the same value or NaN
             const Vec3d point = walk_.grid_point(block.i + p, block.j + q, block.k + r);
             f = full_points_(point.x, point.y, point.z);
+            if (std::isnan(f)) walk_.report_nan(point);
         }
         signs |= f < 0.0 ? 1 << corner : 0;  // f = 0 counts as outside, in every cell alike
     }
@@ -96,8 +116,10 @@ void DualMesher::contour_cell(const OctreeWalk::Block& block, int a, int b, int 
     // A sharp corner can poke into a neighbouring cell without reaching any
     // of its grid points, and so show only in this cell's planes: the vertex
     // may go as far as the neighbours, to keep it.
-    const Box3 box{walk_.grid_point(cell[0] - vertex_reach, cell[1] - vertex_reach, cell[2] - vertex_reach),
-                   walk_.grid_point(cell[0] + 1 + vertex_reach, cell[1] + 1 + vertex_reach, cell[2] + 1 + vertex_reach)};
+    // Never past the box meshed, though.
+    const auto low = [&](int axis) { return std::max(cell[axis] - vertex_reach, 0); };
+    const auto high = [&](int axis) { return std::min(cell[axis] + 1 + vertex_reach, walk_.resolution()); };
+    const Box3 box{walk_.grid_point(low(0), low(1), low(2)), walk_.grid_point(high(0), high(1), high(2))};
     piece_.cells.push_back({point_key(cell[0], cell[1], cell[2], walk_.resolution()),
                             static_cast<std::uint32_t>(piece_.vertices.size()), signs, static_cast<std::uint8_t>(flipped)});
     for (int p = 0; p < patches.count; ++p) piece_.vertices.push_back(qefs[static_cast<std::size_t>(p)].solve(box));
@@ -162,9 +184,9 @@ PolygonizeResult DualMesher::merge(std::vector<Piece>& pieces, int resolution) {
                 if (found == cells.end())
                     throw std::logic_error("dual contouring: a cell beside a crossing was not contoured");
                 const int e = axis * 4 + (1 - around[q][0]) + 2 * (1 - around[q][1]);
-                const cell::Patches patches = cell::patches_of_cell(found->second.signs, found->second.flipped);
-                ring[static_cast<std::size_t>(q)] =
-                    found->second.first_vertex + static_cast<std::uint32_t>(patches.of_edge[static_cast<std::size_t>(e)]);
+                const int patch = cell::patches_of_cell(found->second.signs, found->second.flipped).of_edge[static_cast<std::size_t>(e)];
+                if (patch < 0) throw std::logic_error("dual contouring: neighbouring cells disagree on a crossing");
+                ring[static_cast<std::size_t>(q)] = found->second.first_vertex + static_cast<std::uint32_t>(patch);
             }
             if (far_inside) std::swap(ring[1], ring[3]);  // the outside is towards −axis: turn the quad round
             // Split along the diagonal whose two triangles bend least.
@@ -188,6 +210,7 @@ PolygonizeResult DualMesher::merge(std::vector<Piece>& pieces, int resolution) {
         s.vertex_tolerance = std::max(s.vertex_tolerance, piece.stats.vertex_tolerance);
         piece = Piece{};
     }
+    drop_unused_vertices(result.mesh);
     return result;
 }
 

@@ -11,9 +11,11 @@
 // box gives a closed, consistently oriented mesh, and each vertex's triangles
 // make one fan. Where the surface wraps round a face in both its cells (a
 // handle about a cell thick), the face's rule is flipped, which keeps every
-// edge of the mesh to two triangles. What it does not guarantee: a cell with
-// two such faces can still pinch, and a vertex lies near the surface, not on
-// it: within one cell (vertex_reach) of a cell that the surface crosses.
+// edge of the mesh to two triangles: a flip never leaves its face wrapped
+// nor wraps another (checked over every sign pattern and set of faces, in
+// the tests). What it does not guarantee: a vertex lies near the surface,
+// not on it — within one cell (vertex_reach) of a cell that the surface
+// crosses, and within the box meshed.
 #pragma once
 
 #include <array>

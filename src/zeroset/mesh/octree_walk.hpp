@@ -10,7 +10,10 @@
 // edge lies in every octree cell above it, whose interval therefore holds
 // both signs. Grid points get the same value in every block (a pruned tape
 // only drops min/max branches that lose throughout its cell), so
-// neighbouring blocks agree on every sign.
+// neighbouring blocks agree on every sign — except where a dropped branch
+// is NaN (interval sqrt and log keep to their domain, so a branch can lose
+// over a cell where the full tape is undefined): the full tape says NaN
+// there, which a method that evaluates it must report (report_nan).
 #pragma once
 
 #include <array>
@@ -73,6 +76,8 @@ public:
 
     /// A point where f was found undefined: the walk stopped there.
     [[nodiscard]] const std::optional<Vec3d>& nan_at() const { return nan_at_; }
+    /// Stops the walk: a method found f undefined at p.
+    void report_nan(const Vec3d& p) { nan_at_ = p; }
     [[nodiscard]] std::uint64_t cells_visited() const { return cells_visited_; }
     /// The widest final bracket of any refine(), in scene units.
     [[nodiscard]] double vertex_tolerance() const { return vertex_tolerance_; }

@@ -7,8 +7,8 @@
 // - dual contouring (the default; dual_contouring.hpp): a vertex in each
 //   cell where the tangent planes of its crossings meet, so sharp corners
 //   and edges of the surface are kept; closed and oriented for a surface
-//   closed within the box, every vertex within one cell of a cell the
-//   surface crosses;
+//   closed within the box, every vertex within the box and within one cell
+//   of a cell the surface crosses;
 // - marching tetrahedra (marching_tetrahedra.hpp): vertices on grid edges,
 //   on the surface to the reported tolerance; closed, oriented and always
 //   manifold, but sharp edges are cut.
