@@ -276,3 +276,17 @@ TEST_P(PolygonizeBy, DetailAboutACellThickStaysManifold) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+TEST_P(PolygonizeBy, ATinySurfaceIsClosedAndOrientedToo) {
+    // A ball of radius 10⁻¹⁵⁰: products of its coordinates underflow, so no
+    // triangle may take its winding from a cross product.
+    const double r = 1e-150;
+    const PolygonizeResult t = mesh_of(square(x) + square(y) + square(z) - r * r, {{-2 * r, -2 * r, -2 * r}, {2 * r, 2 * r, 2 * r}}, 16);
+    EXPECT_EQ(euler_characteristic(t.mesh), 2);
+}
+
+}  // namespace
+}  // namespace zeroset

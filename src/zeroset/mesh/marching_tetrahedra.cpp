@@ -7,16 +7,32 @@ namespace zeroset {
 namespace {
 
 /// Kuhn's six tetrahedra of a cube: each walks from corner 0 to corner 7
-/// along the axes in one of the six orders.
-constexpr std::array<std::array<int, 4>, 6> tetrahedra = [] {
-    std::array<std::array<int, 4>, 6> tets{};
+/// along the axes in one of the six orders. Its orientation, the sign of
+/// det(v₁ − v₀, v₂ − v₀, v₃ − v₀) = det(e_a, e_b, e_c) for the order (a, b, c),
+/// is that order's parity.
+struct Tetrahedron {
+    std::array<int, 4> corners;
+    bool positive;
+};
+constexpr std::array<Tetrahedron, 6> tetrahedra = [] {
+    std::array<Tetrahedron, 6> tets{};
     constexpr int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
     for (int t = 0; t < 6; ++t) {
         const int a = 1 << orders[t][0], b = a | (1 << orders[t][1]);
-        tets[static_cast<std::size_t>(t)] = {0, a, b, 7};
+        const bool even = orders[t][0] < orders[t][1] ? orders[t][1] < orders[t][2] || orders[t][2] < orders[t][0]
+                                                      : orders[t][1] < orders[t][2] && orders[t][2] < orders[t][0];
+        tets[static_cast<std::size_t>(t)] = {{0, a, b, 7}, even};
     }
     return tets;
 }();
+
+/// Whether (p[0], p[1], p[2], p[3]), a permutation of 0 to 3, is even.
+constexpr bool even_permutation(const std::array<int, 4>& p) {
+    int inversions = 0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) inversions += p[static_cast<std::size_t>(i)] > p[static_cast<std::size_t>(j)] ? 1 : 0;
+    return inversions % 2 == 0;
+}
 
 }  // namespace
 
@@ -47,41 +63,47 @@ void TetrahedraMesher::march_block(const OctreeWalk::Block& block) {
                 const int i = block.i + a, j = block.j + b, k = block.k + c;
                 for (int corner = 0; corner < 8; ++corner)
                     p[corner] = walk_.grid_point(i + corner_offset(corner, 0), j + corner_offset(corner, 1), k + corner_offset(corner, 2));
-                for (const auto& tet : tetrahedra) march_tetrahedron(tet, i, j, k, p, f);
+                for (const Tetrahedron& tet : tetrahedra) march_tetrahedron(tet.corners, tet.positive, i, j, k, p, f);
             }
 }
 
-void TetrahedraMesher::march_tetrahedron(const std::array<int, 4>& tet, int i, int j, int k, const std::array<Vec3d, 8>& p,
-                                         const std::array<double, 8>& f) {
-    std::array<int, 4> in{}, out{};
+// The triangles' winding comes from the tetrahedron's orientation and the
+// order of its corners, never from positions (which may coincide, or be too
+// close for a cross product): in a positive tetrahedron (v₀, v₁, v₂, v₃), the
+// face (v_j, v_k, v_l) opposite v_i faces away from it when (i, j, k, l) is
+// an even permutation. A lone inside corner's triangle is parallel to its
+// opposite face and must face away from it; a lone outside corner's must
+// face towards it; the quad of two in, two out, in order in₀out₀, in₀out₁,
+// in₁out₁, faces from the inside edge to the outside one when
+// (in₀, in₁, out₀, out₁) is even.
+void TetrahedraMesher::march_tetrahedron(const std::array<int, 4>& corners, bool positive, int i, int j, int k,
+                                         const std::array<Vec3d, 8>& p, const std::array<double, 8>& f) {
+    std::array<int, 4> in{}, out{};  // positions 0 to 3 in the tetrahedron
     int n_in = 0, n_out = 0;
-    for (const int c : tet) (f[c] < 0.0 ? in[n_in++] : out[n_out++]) = c;
+    for (int v = 0; v < 4; ++v) (f[corners[static_cast<std::size_t>(v)]] < 0.0 ? in[n_in++] : out[n_out++]) = v;
     if (n_in == 0 || n_out == 0) return;
-    Vec3d centre_in{}, centre_out{};
-    for (int a = 0; a < n_in; ++a) centre_in += p[in[a]] / static_cast<double>(n_in);
-    for (int b = 0; b < n_out; ++b) centre_out += p[out[b]] / static_cast<double>(n_out);
-    const Vec3d outward = centre_out - centre_in;
-    // A triangle's corner on edge (a, b), and that edge's midpoint: the
-    // midpoints never coincide, so they orient the triangle even where its
-    // vertices do (f = 0 at a grid point puts them on the corner).
-    const auto v = [&](int a, int b) { return Corner{vertex(a, b, i, j, k, p, f), (p[a] + p[b]) * 0.5}; };
+    const auto v = [&](int a, int b) {
+        return vertex(corners[static_cast<std::size_t>(a)], corners[static_cast<std::size_t>(b)], i, j, k, p, f);
+    };
     if (n_in == 1 || n_out == 1) {
         const int lone = n_in == 1 ? in[0] : out[0];
         const std::array<int, 4>& others = n_in == 1 ? out : in;
-        emit({v(lone, others[0]), v(lone, others[1]), v(lone, others[2])}, outward);
-    } else {  // two in, two out: a quad, in cyclic order in0-out0, in0-out1, in1-out1, in1-out0
-        const Corner a = v(in[0], out[0]), b = v(in[0], out[1]), c = v(in[1], out[1]), d = v(in[1], out[0]);
-        emit({a, b, c}, outward);
-        emit({a, c, d}, outward);
+        const bool away = even_permutation({lone, others[0], others[1], others[2]}) == positive;
+        // Away from the lone corner for an inside one, towards it for an outside one.
+        std::array<std::uint32_t, 3> t{v(lone, others[0]), v(lone, others[1]), v(lone, others[2])};
+        if (away != (n_in == 1)) std::swap(t[1], t[2]);
+        emit(t);
+    } else {
+        std::array<std::uint32_t, 4> q{v(in[0], out[0]), v(in[0], out[1]), v(in[1], out[1]), v(in[1], out[0])};
+        if (even_permutation({in[0], in[1], out[0], out[1]}) != positive) std::swap(q[1], q[3]);
+        emit({q[0], q[1], q[2]});
+        emit({q[0], q[2], q[3]});
     }
 }
 
-/// Adds the triangle, turned to face `outward` (towards f > 0).
-void TetrahedraMesher::emit(std::array<Corner, 3> t, const Vec3d& outward) {
-    const Vec3d n = cross(t[1].midpoint - t[0].midpoint, t[2].midpoint - t[0].midpoint);
-    if (dot(n, outward) < 0.0) std::swap(t[1], t[2]);
+void TetrahedraMesher::emit(const std::array<std::uint32_t, 3>& slots) {
     const auto& vs = piece_.vertices;
-    piece_.triangles.push_back({vs[t[0].slot].first, vs[t[1].slot].first, vs[t[2].slot].first});
+    piece_.triangles.push_back({vs[slots[0]].first, vs[slots[1]].first, vs[slots[2]].first});
 }
 
 /// The slot of the vertex on the edge between cell corners a and b (one

@@ -44,15 +44,13 @@ public:
     static PolygonizeResult merge(std::vector<Piece>& pieces);
 
 private:
-    struct Corner {
-        std::uint32_t slot;  // in piece_.vertices
-        Vec3d midpoint;      // of its edge
-    };
-
     void march_block(const OctreeWalk::Block& block);
-    void march_tetrahedron(const std::array<int, 4>& tet, int i, int j, int k, const std::array<Vec3d, 8>& p,
-                           const std::array<double, 8>& f);
-    void emit(std::array<Corner, 3> t, const Vec3d& outward);
+    /// The tetrahedron of these cell corners, positive when
+    /// det(v₁ − v₀, v₂ − v₀, v₃ − v₀) > 0.
+    void march_tetrahedron(const std::array<int, 4>& corners, bool positive, int i, int j, int k,
+                           const std::array<Vec3d, 8>& p, const std::array<double, 8>& f);
+    /// Adds the triangle of these vertex slots (in piece_.vertices), as wound.
+    void emit(const std::array<std::uint32_t, 3>& slots);
     std::uint32_t vertex(int a, int b, int i, int j, int k, const std::array<Vec3d, 8>& p, const std::array<double, 8>& f);
 
     OctreeWalk walk_;
