@@ -41,7 +41,7 @@ void drop_unused_vertices(Mesh& mesh) {
 }  // namespace
 
 DualMesher::DualMesher(const Tape& tape, const Box3& box, int resolution)
-    : walk_(tape, box, resolution), gradients_(tape), full_points_(tape) {}
+    : walk_(tape, box, resolution), gradients_(tape) {}
 
 DualMesher::Piece DualMesher::run(int i, int j, int k, int size) {
     piece_ = Piece{};
@@ -74,9 +74,7 @@ int DualMesher::corner_signs(const OctreeWalk::Block& block, int a, int b, int c
         if (std::min({p, q, r}) >= 0 && std::max({p, q, r}) <= block.size) {
             f = block.value(p, q, r);
         } else {  // beyond the block, where its pruned tape need not hold: the full tape, the same value or NaN
-            const Vec3d point = walk_.grid_point(block.i + p, block.j + q, block.k + r);
-            f = full_points_(point.x, point.y, point.z);
-            if (std::isnan(f)) walk_.report_nan(point);
+            f = walk_.grid_value(block.i + p, block.j + q, block.k + r);
         }
         signs |= f < 0.0 ? 1 << corner : 0;  // f = 0 counts as outside, in every cell alike
     }

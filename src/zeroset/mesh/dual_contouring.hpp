@@ -80,7 +80,6 @@ private:
 
     OctreeWalk walk_;
     Evaluator<Dual<double>> gradients_;
-    Evaluator<double> full_points_;  // f beyond a block
     static constexpr int block_edges = 3 * OctreeWalk::block_points * OctreeWalk::block_points * OctreeWalk::block_points;
     std::array<Crossing, block_edges> crossings_{};
     std::array<std::uint32_t, block_edges> crossing_stamp_{};  // == block_stamp_ where crossings_ is of this block

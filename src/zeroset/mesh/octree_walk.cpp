@@ -13,18 +13,35 @@ constexpr double bracket_goal = 1e-7;
 
 bool OctreeWalk::evaluate_block(int i, int j, int k, int size, const Tape& tape) {
     points_.rebind(tape);
+    grid_.rebind(tape);
+    std::size_t n = 0;
     for (int c = 0; c <= size; ++c)
         for (int b = 0; b <= size; ++b)
-            for (int a = 0; a <= size; ++a) {
+            for (int a = 0; a <= size; ++a, ++n) {
                 const Vec3d q = grid_point(i + a, j + b, k + c);
-                const double value = points_(q.x, q.y, q.z);
-                if (std::isnan(value)) {
-                    nan_at_ = q;
+                xs_[n] = q.x, ys_[n] = q.y, zs_[n] = q.z;
+            }
+    std::array<double, block_points * block_points * block_points> values{};
+    grid_.evaluate({xs_.data(), n}, {ys_.data(), n}, {zs_.data(), n}, {values.data(), n});
+    n = 0;
+    for (int c = 0; c <= size; ++c)
+        for (int b = 0; b <= size; ++b)
+            for (int a = 0; a <= size; ++a, ++n) {
+                if (std::isnan(values[n])) {
+                    nan_at_ = Vec3d{xs_[n], ys_[n], zs_[n]};
                     return false;
                 }
-                block_values_[static_cast<std::size_t>(a + block_points * (b + block_points * c))] = value;
+                block_values_[static_cast<std::size_t>(a + block_points * (b + block_points * c))] = values[n];
             }
     return true;
+}
+
+double OctreeWalk::grid_value(int i, int j, int k) {
+    const Vec3d q = grid_point(i, j, k);
+    double value = 0.0;
+    full_grid_.evaluate({&q.x, 1}, {&q.y, 1}, {&q.z, 1}, {&value, 1});
+    if (std::isnan(value)) nan_at_ = q;
+    return value;
 }
 
 Vec3d OctreeWalk::refine(const Vec3d& in, double f_in, const Vec3d& out, double f_out) {

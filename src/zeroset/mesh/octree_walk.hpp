@@ -13,7 +13,10 @@
 // neighbouring blocks agree on every sign — except where a dropped branch
 // is NaN (interval sqrt and log keep to their domain, so a branch can lose
 // over a cell where the full tape is undefined): the full tape says NaN
-// there, which a method that evaluates it must report (report_nan).
+// there, and grid_value() reports it. Grid points are evaluated in the batch
+// evaluator's SIMD lanes, a block at a time; the steps along edges one by
+// one (their signs are the grid's, so the two evaluators need not agree to
+// the bit).
 #pragma once
 
 #include <array>
@@ -23,6 +26,7 @@
 #include <optional>
 #include <vector>
 
+#include "zeroset/expr/batch_evaluator.hpp"
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/tape_pruner.hpp"
 #include "zeroset/math/box3.hpp"
@@ -52,7 +56,7 @@ public:
     };
 
     OctreeWalk(const Tape& tape, const Box3& box, int resolution)
-        : full_(tape), box_(box), resolution_(resolution), pruner_(tape), points_(tape),
+        : full_(tape), box_(box), resolution_(resolution), pruner_(tape), points_(tape), grid_(tape), full_grid_(tape),
           tapes_(static_cast<std::size_t>(std::countr_zero(static_cast<unsigned>(resolution))) + 1) {}
 
     /// Walks the subtree of `size` grid cells at (i, j, k) and calls
@@ -76,8 +80,10 @@ public:
 
     /// A point where f was found undefined: the walk stopped there.
     [[nodiscard]] const std::optional<Vec3d>& nan_at() const { return nan_at_; }
-    /// Stops the walk: a method found f undefined at p.
-    void report_nan(const Vec3d& p) { nan_at_ = p; }
+    /// f at the grid point (i, j, k) by the full tape, as a block's grid
+    /// points are evaluated (the same lanes, so the same value to the bit);
+    /// NaN stops the walk.
+    double grid_value(int i, int j, int k);
     [[nodiscard]] std::uint64_t cells_visited() const { return cells_visited_; }
     /// The widest final bracket of any refine(), in scene units.
     [[nodiscard]] double vertex_tolerance() const { return vertex_tolerance_; }
@@ -115,6 +121,9 @@ private:
     int resolution_;
     TapePruner pruner_;
     Evaluator<double> points_;
+    BatchEvaluator<double> grid_;       // a block's grid points at once
+    BatchEvaluator<double> full_grid_;  // grid points beyond a block, on the full tape
+    std::array<double, block_points * block_points * block_points> xs_{}, ys_{}, zs_{};
     std::vector<Tape> tapes_;  // one pruned tape a level of the octree
     std::array<double, block_points * block_points * block_points> block_values_{};
     std::optional<Vec3d> nan_at_;
