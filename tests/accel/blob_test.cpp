@@ -244,6 +244,29 @@ TEST(Blob, ACylinderIsTheKernelOfTheDistanceToItsSegment) {
     EXPECT_NEAR(n.z, 0.0, 1e-12);
 }
 
+TEST(Blob, ARayInACylindersEndPlaneCountsItOnce) {
+    // In the plane through an end, the round end and the body agree: the
+    // ray must see one of them, not both (found in review: twice the field).
+    BlobComponent c;
+    c.center = {0, 0, 0};
+    c.end = Vec3d{0, 0, 1};
+    c.radius = 1.0;
+    const auto model = std::make_shared<const BlobModel>(BlobKernel::PovRay, 0.5, std::vector{c});
+    const Blob blob(BlobDescription{"stick", model, no_material, 1e-9, 1});
+    TraceScratch scratch(1);
+    const double d = std::sqrt(1.0 - std::sqrt(0.5));  // (1 − d²)² = 1/2
+    for (const double z : {0.0, 1.0}) {
+        const auto hit = blob.first_hit({{-5, 0, z}, {1, 0, 0}}, 0.0, 1e9, scratch);
+        ASSERT_TRUE(hit);
+        EXPECT_NEAR(hit->t, 5.0 - d, 1e-12) << z;
+        EXPECT_FALSE(blob.first_hit({{-5, 0.6, z}, {1, 0, 0}}, 0.0, 1e9, scratch)) << z;  // K(0.36) < 1/2
+    }
+    // Starting on the end plane, outside the surface, and leaving it: no hit at the start.
+    const double s = std::sqrt(0.5);
+    EXPECT_FALSE(blob.first_hit({{0.6, 0, 0}, {s, 0, s}}, 0.0, 1e9, scratch));
+    EXPECT_FALSE(blob.first_hit({{0.6, 0, 1}, {s, 0, -s}}, 0.0, 1e9, scratch));
+}
+
 TEST(Blob, MetaballQuadraticsApproximateTheExactKernel) {
     // The survey's §3.1 approximation against the exact metaball kernel on
     // the same blob: how far the first hits move, and how many rays change

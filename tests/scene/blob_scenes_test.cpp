@@ -119,6 +119,10 @@ TEST(BlobScenes, BadBlobsGetClearErrors) {
               "scene.zs:1:48: a cylinder component takes no transform: move its ends instead");
     EXPECT_EQ(error_of("blob { component { from (0, 0, 0) to (0, 0, 0) } }"),
               "scene.zs:1:35: the cylinder's ends must differ (a sphere has a center)");
+    EXPECT_EQ(error_of("blob { component { from (0, 0, 0) to (1e-200, 0, 0) } }"),
+              "scene.zs:1:35: the cylinder is too short to measure: the square of its length is beyond a double");
+    EXPECT_EQ(error_of("blob { component { from (1e200, 0, 0) to (-1e200, 0, 0) } }"),
+              "scene.zs:1:39: the cylinder is too long to measure: the square of its length is beyond a double");
     EXPECT_EQ(error_of("blob { kernel metaball quadratics on component { from (0, 0, 0) to (1, 0, 0) } }"),
               "scene.zs:1:24: quadratics (the survey's quadratic pieces) is for round components, not cylinders");
     EXPECT_EQ(error_of("blob { component { radius 1e-310 } }"),

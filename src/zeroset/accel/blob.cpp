@@ -15,6 +15,8 @@ namespace zeroset {
 namespace {
 
 /// The events' heap order: the earliest on top, and at equal t entries first.
+constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
+
 bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
     return a.t > b.t || (a.t == b.t && a.kind > b.kind);
 }
@@ -67,44 +69,39 @@ BlobScratch& Blob::scratch_for(TraceScratch& scratch) const {
     return *slot;
 }
 
-std::optional<KernelOnRay> Blob::part_on_ray(const Ray& ray, const Component& c, bool own_map, const Vec3d& center,
-                                             Span part) const {
-    Vec3d q0, qd;
-    if (own_map) {
-        q0 = to_kernel(c).transform_point(ray.origin);
-        qd = to_kernel(c).transform_vector(ray.dir);
-    } else {
-        q0 = (ray.origin - center) * c.inverse_radius;
-        qd = ray.dir * c.inverse_radius;
-    }
+std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay& q, Span part) const {
     std::optional<Span> reach;
-    if (dot(qd, qd) > 0.0) {
-        reach = reach_on_ray(q0, qd, c.reach);
-    } else if (dot(q0, q0) <= c.reach) {  // a ray along a cylinder's axis: the body's u is constant
+    if (dot(q.qd, q.qd) > 0.0) {
+        reach = reach_on_ray(q.q0, q.qd, c.reach);
+    } else if (dot(q.q0, q.q0) <= c.reach) {  // a ray along a cylinder's axis: the body's u is constant
         reach = Span{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     }
     if (!reach) return std::nullopt;
     const double t_in = std::max(reach->t0, part.t0), t_out = std::min(reach->t1, part.t1);
     if (!(t_in <= t_out)) return std::nullopt;
-    KernelOnRay k{q0, qd, 0.0, 0.0, c.strength, c.blobbiness, t_in, t_out, static_cast<std::uint32_t>(&c - components_.data())};
-    if (own_map) {
-        k.q0_error = mapping_error(to_kernel(c), ray.origin, true);
-        k.qd_error = mapping_error(to_kernel(c), ray.dir, false);
-    } else {
-        const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
-        constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
-        k.q0_error = u4 * (largest(ray.origin) + largest(center)) * c.inverse_radius;
-        k.qd_error = u4 * largest(ray.dir) * c.inverse_radius;
-    }
-    return k;
+    return KernelOnRay{q.q0, q.qd, q.q0_error, q.qd_error, c.strength, c.blobbiness, t_in, t_out,
+                       static_cast<std::uint32_t>(&c - components_.data())};
+}
+
+Blob::MappedRay Blob::about_point(const Ray& ray, const Component& c, const Vec3d& center) const {
+    const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
+    return {(ray.origin - center) * c.inverse_radius, ray.dir * c.inverse_radius,
+            u4 * (largest(ray.origin) + largest(center)) * c.inverse_radius, u4 * largest(ray.dir) * c.inverse_radius};
 }
 
 template <class Add>
 void Blob::on_ray(const Ray& ray, std::uint32_t i, Add&& add) const {
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const Component& c = components_[i];
+    const Span everywhere{-infinity, infinity};
+    if (c.sphere) {
+        if (const auto k = part_on_ray(c, about_point(ray, c, c.center), everywhere)) add(*k);
+        return;
+    }
     if (!c.cylinder) {
-        if (const auto k = part_on_ray(ray, c, !c.sphere, c.center, {-infinity, infinity})) add(*k);
+        const MappedRay q{to_kernel(c).transform_point(ray.origin), to_kernel(c).transform_vector(ray.dir),
+                          mapping_error(to_kernel(c), ray.origin, true), mapping_error(to_kernel(c), ray.dir, false)};
+        if (const auto k = part_on_ray(c, q, everywhere)) add(*k);
         return;
     }
     // The ray's place along the axis, s(t) = s0 + t·sd: the body for s in
@@ -112,25 +109,33 @@ void Blob::on_ray(const Ray& ray, std::uint32_t i, Add&& add) const {
     // to first order (distance to the end = distance to the axis), so the
     // rounding of these bounds changes f by its square: far below the
     // segment solver's rounding radius.
-    const Vec3d w = c.end - c.center;
-    const double s0 = dot(ray.origin - c.center, w) / dot(w, w), sd = dot(ray.dir, w) / dot(w, w);
-    Span start{-infinity, infinity}, body = start, finish = start;  // where s ≤ 0, 0 ≤ s ≤ 1, s ≥ 1
+    const Vec3d w = c.end - c.center, offset = ray.origin - c.center;
+    const double s0 = dot(offset, w) / dot(w, w), sd = dot(ray.dir, w) / dot(w, w);
+    Span start = everywhere, body = everywhere, finish = everywhere;  // where s ≤ 0, 0 ≤ s ≤ 1, s ≥ 1
     if (sd != 0.0) {
         const double at_start = -s0 / sd, at_end = (1.0 - s0) / sd;
         body = {std::min(at_start, at_end), std::max(at_start, at_end)};
         start = sd > 0.0 ? Span{-infinity, at_start} : Span{at_start, infinity};
         finish = sd > 0.0 ? Span{at_end, infinity} : Span{-infinity, at_end};
     } else {
+        // One part only: a ray in an end plane is the body's (both agree there).
         const Span none{infinity, -infinity};
-        if (!(s0 <= 0.0)) start = none;
+        if (!(s0 < 0.0)) start = none;
         if (!(s0 >= 0.0 && s0 <= 1.0)) body = none;
-        if (!(s0 >= 1.0)) finish = none;
+        if (!(s0 > 1.0)) finish = none;
     }
+    // The body: q = ((p − a) − s·w)/R, the offset from the axis line. Its
+    // rounding: p − a, then s (a dot product over w·w: off by a few units
+    // times |p − a|/|w|), s·w and the difference, within 8 units of
+    // (|o| + |a| + |s0|·|w|)/R — and the same for the direction.
+    const MappedRay across{(offset - s0 * w) * c.inverse_radius, (ray.dir - sd * w) * c.inverse_radius,
+                           2.0 * u4 * (length(ray.origin) + length(c.center) + std::abs(s0) * length(w)) * c.inverse_radius,
+                           2.0 * u4 * (length(ray.dir) + std::abs(sd) * length(w)) * c.inverse_radius};
     // In the order the ray meets them, so that the events come sorted when they can.
     const bool forwards = sd >= 0.0;
-    if (const auto k = part_on_ray(ray, c, false, forwards ? c.center : c.end, forwards ? start : finish)) add(*k);
-    if (const auto k = part_on_ray(ray, c, true, c.center, body)) add(*k);
-    if (const auto k = part_on_ray(ray, c, false, forwards ? c.end : c.center, forwards ? finish : start)) add(*k);
+    if (const auto k = part_on_ray(c, about_point(ray, c, forwards ? c.center : c.end), forwards ? start : finish)) add(*k);
+    if (const auto k = part_on_ray(c, across, body)) add(*k);
+    if (const auto k = part_on_ray(c, about_point(ray, c, forwards ? c.end : c.center), forwards ? finish : start)) add(*k);
 }
 
 void Blob::gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, TraceScratch& scratch) const {
@@ -180,8 +185,13 @@ BlobSegmentSettings Blob::settings_for(const Ray& ray) const {
 
 double Blob::value_on_ray(const BlobScratch& s, double t) const {
     double field = 0.0;
-    for (const KernelOnRay& k : s.kernels)
-        if (t >= k.t_in && t <= k.t_out) field += k.strength * kernel_value_on_ray(settings_, k, t);
+    const KernelOnRay* previous = nullptr;  // a cylinder's parts come one after another and meet at their ends: count one
+    for (const KernelOnRay& k : s.kernels) {
+        if (!(t >= k.t_in && t <= k.t_out)) continue;
+        if (previous && previous->component == k.component && t >= previous->t_in && t <= previous->t_out) continue;
+        field += k.strength * kernel_value_on_ray(settings_, k, t);
+        previous = &k;
+    }
     return settings_.threshold - field;
 }
 
@@ -293,7 +303,9 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
     s.hit_blob = this;
     s.hit_point = h.surface.local_point;
     s.hit_components.clear();
-    for (const std::uint32_t k : s.active) s.hit_components.push_back(s.kernels[k].component);
+    for (const std::uint32_t k : s.active)  // a cylinder's parts meet at their ends: its component once
+        if (std::find(s.hit_components.begin(), s.hit_components.end(), s.kernels[k].component) == s.hit_components.end())
+            s.hit_components.push_back(s.kernels[k].component);
     return h;
 }
 

@@ -108,10 +108,16 @@ private:
     /// ray, the kernel of a distance to a point or to the axis line).
     template <class Add>
     void on_ray(const Ray& ray, std::uint32_t i, Add&& add) const;
-    /// The kernel along the ray of the point map q = (p − center)/R, or of
-    /// the component's own map, within reach and the span `part`.
-    [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Ray& ray, const Component& c, bool own_map,
-                                                         const Vec3d& center, Span part) const;
+    /// The ray in a kernel's space, q(t) = q0 + t·qd, with bounds on the
+    /// rounding of each coordinate.
+    struct MappedRay {
+        Vec3d q0, qd;
+        double q0_error, qd_error;
+    };
+    /// The ray about a point: q = (p − center)/R.
+    [[nodiscard]] MappedRay about_point(const Ray& ray, const Component& c, const Vec3d& center) const;
+    /// The component's kernel along the mapped ray, within reach and the span `part`.
+    [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part) const;
 
     BlobScratch& scratch_for(TraceScratch& scratch) const;
     /// Adds a component the ray meets to s.kernels and its events, clipped to [t_min, t_max], to s.events.

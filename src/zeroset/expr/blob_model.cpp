@@ -97,28 +97,19 @@ Expr kernel_expression(BlobKernel kernel, const Expr& u, double blobbiness) {
     return Expr();
 }
 
-/// A cylinder's body map: q = (p − a − ((p − a)·w / w·w)·w) / R for the
-/// axis w from its start a to its end.
-Mat4 cylinder_body_map(const BlobComponent& c, const std::string& which) {
+/// Throws for a cylinder that cannot be traced: ends not finite, too close
+/// or too far apart to measure, or a shape.
+void check_cylinder(const BlobComponent& c, const std::string& which) {
     const Vec3d& end = *c.end;
     if (!(std::isfinite(end.x) && std::isfinite(end.y) && std::isfinite(end.z)))
         throw std::invalid_argument(which + "the cylinder's end must be finite");
     const Vec3d w = end - c.center;
     const double length2 = dot(w, w);
-    if (!(length2 > 0.0) || !std::isfinite(length2))
-        throw std::invalid_argument(which + "the cylinder's ends must differ (a sphere has one center)");
+    if (w == Vec3d{}) throw std::invalid_argument(which + "the cylinder's ends must differ (a sphere has one center)");
+    if (!(length2 > 0.0 && std::isfinite(length2)))
+        throw std::invalid_argument(which + "the cylinder's length is beyond what a double can square");
     if (!(c.shape == Mat4::identity()))
         throw std::invalid_argument(which + "a cylinder takes no shape: move its ends instead");
-    Mat4 map = Mat4::identity();
-    for (std::size_t r = 0; r < 3; ++r) {
-        for (std::size_t k = 0; k < 3; ++k)
-            map.m[r][k] = ((r == k ? 1.0 : 0.0) - w[static_cast<int>(r)] * w[static_cast<int>(k)] / length2) / c.radius;
-        map.m[r][3] = 0.0;
-    }
-    const Vec3d offset = map.transform_vector(c.center);
-    for (std::size_t r = 0; r < 3; ++r) map.m[r][3] = -offset[static_cast<int>(r)];
-    if (!map.is_finite()) throw std::invalid_argument(which + "the cylinder's radius maps it outside what a double holds");
-    return map;
 }
 
 /// The point of the segment [a, b] nearest p.
@@ -193,10 +184,7 @@ BlobModel::BlobModel(BlobKernel kernel, double threshold, std::vector<BlobCompon
             throw std::invalid_argument(which + "its peak, strength × e^(-blobbiness), overflows a double");
         if (!(std::isfinite(c.center.x) && std::isfinite(c.center.y) && std::isfinite(c.center.z)))
             throw std::invalid_argument(which + "the center must be finite");
-        if (c.is_cylinder()) {
-            to_kernel_.push_back(cylinder_body_map(c, which));
-            continue;
-        }
+        if (c.is_cylinder()) check_cylinder(c, which);
         const std::optional<Mat4> inverse = c.shape.inverse();
         if (!c.shape.is_finite() || !inverse || !(c.shape.squareness() > 1e-12))
             throw std::invalid_argument(which + "the shape is singular (it flattens the component)");

@@ -101,9 +101,8 @@ public:
 
     /// The map from blob space to component i's kernel space, where u = |q|²
     /// (its center at the origin, its radius 1): q = M·p + m. For a
-    /// cylinder, the map to its body's: q is the offset from the axis line
-    /// over R (a projection, not invertible), which holds between the
-    /// planes through its ends.
+    /// cylinder, the map about its start, which gives u only before the
+    /// plane through it (u_at has the whole).
     [[nodiscard]] const Mat4& to_kernel(std::size_t i) const { return to_kernel_[i]; }
     /// u of component i at p (beyond its reach too).
     [[nodiscard]] double u_at(std::size_t i, const Vec3d& p) const;

@@ -176,6 +176,10 @@ BlobComponent SceneParser::blob_component(const Token& keyword, BlobKernel kerne
         if (given("transform"))
             in_->fail(placed.at("transform"), "a cylinder component takes no transform: move its ends instead");
         if (*from == *to) in_->fail(placed.at("to"), "the cylinder's ends must differ (a sphere has a center)");
+        const double length2 = dot(*to - *from, *to - *from);
+        if (!(length2 > 0.0 && std::isfinite(length2)))
+            in_->fail(placed.at("to"), std::string("the cylinder is too ") + (length2 > 0.0 ? "long" : "short") +
+                                           " to measure: the square of its length is beyond a double");
         c.center = *from;
         c.end = to;
     }

@@ -132,7 +132,9 @@ double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<con
     for (const std::uint32_t i : active) {
         const KernelOnRay& k = kernels[i];
         if (k.strength < 0.0) continue;
-        const double nearest = std::clamp(-dot(k.q0, k.qd) / dot(k.qd, k.qd), ta, tb);
+        // A ray along a cylinder's axis has qd = 0: u is the same everywhere.
+        const double a2 = dot(k.qd, k.qd);
+        const double nearest = a2 > 0.0 ? std::clamp(-dot(k.q0, k.qd) / a2, ta, tb) : ta;
         const Vec3d q = k.q0 + nearest * k.qd;
         // |q| a little short by what the mapping and q0 + t·qd may be off
         // (each coordinate, so √3 of it in length), then K a little high:
