@@ -45,11 +45,8 @@ DualMesher::DualMesher(const Tape& tape, const Box3& box, int resolution)
 
 DualMesher::Piece DualMesher::run(int i, int j, int k, int size) {
     piece_ = Piece{};
-    walk_.reset_counts();
     walk_.walk(i, j, k, size, [this](const OctreeWalk::Block& block) { contour_block(block); });
-    piece_.stats.cells_visited = walk_.cells_visited();
-    piece_.stats.vertex_tolerance = walk_.vertex_tolerance();
-    piece_.nan_at = walk_.nan_at();
+    walk_.report(piece_);
     return std::move(piece_);
 }
 

@@ -39,11 +39,8 @@ constexpr bool even_permutation(const std::array<int, 4>& p) {
 TetrahedraMesher::Piece TetrahedraMesher::run(int i, int j, int k, int size) {
     piece_ = Piece{};
     slot_of_edge_.clear();
-    walk_.reset_counts();
     walk_.walk(i, j, k, size, [this](const OctreeWalk::Block& block) { march_block(block); });
-    piece_.stats.cells_visited = walk_.cells_visited();
-    piece_.stats.vertex_tolerance = walk_.vertex_tolerance();
-    piece_.nan_at = walk_.nan_at();
+    walk_.report(piece_);
     return std::move(piece_);
 }
 

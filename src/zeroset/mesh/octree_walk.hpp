@@ -61,10 +61,23 @@ public:
 
     /// Walks the subtree of `size` grid cells at (i, j, k) and calls
     /// on_block(const Block&) for each block that may hold the surface, in a
-    /// fixed order. Stops early where f is NaN (see nan_at()).
+    /// fixed order; the counts start afresh. Stops early where f is NaN (see
+    /// nan_at()).
     template <class OnBlock>
     void walk(int i, int j, int k, int size, OnBlock&& on_block) {
+        nan_at_.reset();
+        cells_visited_ = 0;
+        vertex_tolerance_ = 0.0;
         visit(i, j, k, size, full_, 0, on_block);
+    }
+
+    /// The last walk's counts, and where it found f undefined, into a
+    /// method's piece.
+    template <class Piece>
+    void report(Piece& piece) const {
+        piece.stats.cells_visited = cells_visited_;
+        piece.stats.vertex_tolerance = vertex_tolerance_;
+        piece.nan_at = nan_at_;
     }
 
     [[nodiscard]] int resolution() const { return resolution_; }
@@ -84,15 +97,6 @@ public:
     /// points are evaluated (the same lanes, so the same value to the bit);
     /// NaN stops the walk.
     double grid_value(int i, int j, int k);
-    [[nodiscard]] std::uint64_t cells_visited() const { return cells_visited_; }
-    /// The widest final bracket of any refine(), in scene units.
-    [[nodiscard]] double vertex_tolerance() const { return vertex_tolerance_; }
-    /// Starts the counts (and nan_at) afresh, for the next subtree.
-    void reset_counts() {
-        nan_at_.reset();
-        cells_visited_ = 0;
-        vertex_tolerance_ = 0.0;
-    }
 
 private:
     template <class OnBlock>
@@ -128,7 +132,7 @@ private:
     std::array<double, block_points * block_points * block_points> block_values_{};
     std::optional<Vec3d> nan_at_;
     std::uint64_t cells_visited_ = 0;
-    double vertex_tolerance_ = 0.0;
+    double vertex_tolerance_ = 0.0;  // the widest final bracket of any refine(), in scene units
 };
 
 }  // namespace zeroset
