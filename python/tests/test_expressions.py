@@ -49,6 +49,8 @@ def test_the_scene_languages_functions_are_modules_functions():
     assert moved(3, 0, 0) == pytest.approx(-1.0)
     blended = zs.smooth_union(zs.sd_sphere(1), moved, 0.5)
     assert blended(1.5, 0, 0) < min(zs.sd_sphere(1)(1.5, 0, 0), moved(1.5, 0, 0))
+    fillet = zs.algebraic_blend(x * x + z * z - 0.25, y, 0.36, 0.3)
+    assert fillet(0.61 ** 0.5, 0, 0) == pytest.approx(0.0, abs=1e-14)  # on the plate where g = a
     # A shape evaluated at a point of expressions, as in the language.
     assert zs.sd_sphere(1, (x - 1, y, z))(1, 0, 0) == pytest.approx(-1.0)
     # The named algebraic surfaces come from their own table.

@@ -42,6 +42,8 @@ TEST(BuiltinFunctions, MathFunctionsEvaluateTheirFormulas) {
     EXPECT_DOUBLE_EQ(evaluate("smoothstep(0, 1, x)", x, y, z), x * x * (3 - 2 * x));
     EXPECT_EQ(surface("smooth_union(x, y, 0.5) + smooth_intersection(x, z, 0.25) - smooth_difference(y, z, 1)"),
               smooth_union(X, Y, 0.5) + smooth_intersection(X, Z, 0.25) - smooth_difference(Y, Z, 1.0));
+    EXPECT_EQ(surface("algebraic_blend(x^2 + z^2 - 1, y, 0.5, 0.25)"),
+              algebraic_blend(powi(X, 2) + powi(Z, 2) - 1.0, Y, 0.5, 0.25));
 }
 
 TEST(BuiltinFunctions, ShapesAndTheirPoint) {
@@ -116,6 +118,9 @@ TEST(BuiltinFunctions, WrongCallsAreLocatedErrors) {
               "call it as bend(f, along, toward, rate, [lo, hi])");
     EXPECT_EQ(error_of("object { surface smooth_union(x, y, 0) }"),
               "scene.zs:1:18: smooth_union: the blend radius k must be positive; call it as smooth_union(a, b, k)");
+    EXPECT_EQ(error_of("object { surface algebraic_blend(x, y, 0.5, -2) }"),
+              "scene.zs:1:18: algebraic_blend: the offset b of h must be positive, but it is -2; "
+              "call it as algebraic_blend(g, h, a, b)");
     EXPECT_EQ(error_of("object { surface scale(x, 0) }"),
               "scene.zs:1:18: scale: a uniform scale must be positive and finite; "
               "call it as scale(f, s) or scale(f, factors)");

@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "zeroset/expr/parameter_checks.hpp"
+
 namespace zeroset {
 
 Expr mod(const Expr& a, const Expr& b) { return a - b * floor(a / b); }
@@ -24,5 +26,11 @@ Expr smooth_union(const Expr& a, const Expr& b, double k) {
 Expr smooth_intersection(const Expr& a, const Expr& b, double k) { return -smooth_union(-a, -b, k); }
 
 Expr smooth_difference(const Expr& a, const Expr& b, double k) { return smooth_intersection(a, -b, k); }
+
+Expr algebraic_blend(const Expr& g, const Expr& h, double a, double b) {
+    parameter_checks::require_positive(a, "the offset a of g");
+    parameter_checks::require_positive(b, "the offset b of h");
+    return (4.0 / (a * b)) * g * h - square((1.0 / a) * g + (1.0 / b) * h - 1.0);
+}
 
 }  // namespace zeroset

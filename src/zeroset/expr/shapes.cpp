@@ -2,35 +2,19 @@
 #include "zeroset/expr/shapes.hpp"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "zeroset/expr/functions.hpp"
+#include "zeroset/expr/parameter_checks.hpp"
 
 namespace zeroset {
 
 namespace {
 
-std::string shown(double v) {
-    std::array<char, 32> buffer{};
-    const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), v).ptr;
-    return {buffer.data(), end};
-}
-
-void require_positive(double v, const char* name) {
-    if (!(v > 0.0) || !std::isfinite(v))
-        throw std::invalid_argument(std::string(name) + " must be positive, but it is " + shown(v));
-}
-
-void require_positive(const Vec3d& v, const char* name) {
-    for (int i = 0; i < 3; ++i)
-        if (!(v[i] > 0.0) || !std::isfinite(v[i]))
-            throw std::invalid_argument(std::string(name) + " must be positive in every component, but component " +
-                                        std::to_string(i + 1) + " is " + shown(v[i]));
-}
+using parameter_checks::require_positive;
+using parameter_checks::shown;
 
 /// p·c without the terms whose coefficient is 0.
 Expr dot_with(const ExprPoint& p, const Vec3d& c) {

@@ -133,6 +133,8 @@ const std::vector<Builtin>& table() {
          [](A a) { return smooth_intersection(a.number(0), a.number(1), a.constant(2)); }},
         {"smooth_difference", {{"a", N}, {"b", N}, {"k", C}}, 3, false,
          [](A a) { return smooth_difference(a.number(0), a.number(1), a.constant(2)); }},
+        {"algebraic_blend", {{"g", N}, {"h", N}, {"a", C}, {"b", C}}, 4, false,
+         [](A a) { return algebraic_blend(a.number(0), a.number(1), a.constant(2), a.constant(3)); }},
         // Distance primitives, at (x, y, z) or at a given point.
         {"sd_sphere", {{"radius", C}, {"point", P}}, 1, false,
          [](A a) { return sd_sphere(a.point(1), a.constant(0)); }},
