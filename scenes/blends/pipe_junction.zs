@@ -31,8 +31,9 @@ union "junction" {
   # The foot: g = 0.36 is the circle of radius √(0.25 + 0.36) ≈ 0.78 on the
   # plate, h = 0.3 the height where the fillet meets the post.
   instance fillet(post, plate, 0.36, 0.3, (-0.79, -0.01, -0.79), (0.79, 0.31, 0.79))
-  # The joint: the fillet leaves the post at radius √(0.25 + 0.2) ≈ 0.67 and
-  # the pipe at radius √(0.09 + 0.12) ≈ 0.46.
+  # The joint: the fillet meets the pipe where the distance from the post's
+  # axis is √(0.25 + 0.2) ≈ 0.67, and the post where the distance from the
+  # pipe's axis is √(0.09 + 0.12) ≈ 0.46.
   instance fillet(post, pipe, 0.2, 0.12, (-0.68, 0.73, -0.5), (0.68, 1.67, 0.5))
   material { color (0.62, 0.64, 0.68)  specular 0.6  shininess 60 }
 }

@@ -62,10 +62,13 @@ TEST(AlgebraicBlend, FollowsTheParabolaBetweenTheTangentCurves) {
         EXPECT_LT(value(rho * 0.6, 0.9 * height, rho * 0.8), 0.0) << "rho " << rho;
         EXPECT_GT(value(rho * 0.6, 1.1 * height + 1e-3, rho * 0.8), 0.0) << "rho " << rho;
     }
-    // Inside one solid and outside the other the blend is negative too, so
-    // uniting it with the solids adds only the fillet.
-    EXPECT_LT(value(0.2, 0.5, 0.0), 0.0);   // in the post, above the plate
-    EXPECT_LT(value(0.9, -0.1, 0.0), 0.0);  // in the plate, away from the post
+    // Inside one solid and outside the other the blend is negative too (it
+    // is hidden there when the solids' objects cover the clipped region).
+    EXPECT_LT(value(0.2, 0.2, 0.0), 0.0);   // in the post, above the plate
+    EXPECT_LT(value(0.7, -0.1, 0.0), 0.0);  // in the plate, beside the post
+    // Beyond g = a the parabola's other branch makes it negative again: why
+    // the fillet is clipped to g ≤ a and h ≤ b.
+    EXPECT_LT(value(1.0, 0.05, 0.0), 0.0);
 }
 
 TEST(AlgebraicBlend, OfPolynomialsIsAPolynomial) {

@@ -36,20 +36,12 @@ Expr smooth_intersection(const Expr& a, const Expr& b, double k);
 Expr smooth_difference(const Expr& a, const Expr& b, double k);
 
 // Hoffman and Hopcroft's algebraic blend by the potential method (survey
-// §3.3; Hoffman & Hopcroft 1985): the surface C(g, h) = 0, where C is a
-// plane curve in the (s, t) plane of the two potentials. Here C is the
-// parabola √(s/a) + √(t/b) = 1, squared twice into the conic
-//   (s/a + t/b − 1)² − 4st/(ab) = 0,
-// which touches the s axis at (a, 0) and the t axis at (0, b). So the blend
-// surface touches h = 0 along the curve g = a, h = 0, and g = 0 along
-// g = 0, h = b (their theorem: tangency of C to an axis carries over to the
-// surfaces). The result, 4gh/(ab) − (g/a + h/b − 1)², is negative in the
-// fillet: between the two surfaces (g, h > 0) on the near side of the arc,
-// and wherever g and h differ in sign. It is a polynomial of degree
-// 2·max(deg g, deg h) when g and h are polynomials, so the exact polynomial
-// path traces it. It is a blend only within g ≤ a, h ≤ b (beyond, the
-// parabola's other branches run off): intersect it with those, and unite the
-// result with the two solids — CSG integrates the blend into the model.
+// §3.3; Hoffman & Hopcroft 1985): C(g, h) = 0 for the parabola
+// √(s/a) + √(t/b) = 1 squared twice, as 4gh/(ab) − (g/a + h/b − 1)², which
+// touches h = 0 where g = a and g = 0 where h = b, and is negative in the
+// fillet. A polynomial of degree at most 2·max(deg g, deg h) when g and h
+// are polynomials. It is a fillet only when clipped to g ≤ a and h ≤ b and
+// united with the two solids (docs/algebraic-blends.md).
 Expr algebraic_blend(const Expr& g, const Expr& h, double a, double b);
 
 }  // namespace zeroset
