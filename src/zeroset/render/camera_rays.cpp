@@ -30,6 +30,11 @@ double CameraRays::pixel_extent(std::span<const Vec3d> points) const {
     return std::max(x_hi - x_lo, y_hi - y_lo);
 }
 
+double CameraRays::footprint_radius() const {
+    const double pixel_side = 2.0 * half_height_ / height_;  // at distance 1 on the axis
+    return pixel_side / std::sqrt(std::numbers::pi);
+}
+
 Ray CameraRays::ray(int px, int py, double sx, double sy) const {
     const double u = (2.0 * (px + sx) / width_ - 1.0) * half_width_;
     const double v = (1.0 - 2.0 * (py + sy) / height_) * half_height_;

@@ -15,6 +15,10 @@ public:
 
     /// The ray through image position (px + sx, py + sy); y grows downwards.
     [[nodiscard]] Ray ray(int px, int py, double sx, double sy) const;
+    /// The radius, per unit of distance along a ray, of the disk as large as
+    /// one pixel (its area) at the image's centre: the footprint cone
+    /// tracing widens a ray to (render/cone_tracer.hpp).
+    [[nodiscard]] double footprint_radius() const;
     /// The larger side, in pixels, of the rectangle the points project to
     /// (beyond the image too); +∞ when one is not in front of the eye.
     [[nodiscard]] double pixel_extent(std::span<const Vec3d> points) const;

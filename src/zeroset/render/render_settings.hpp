@@ -16,6 +16,10 @@ struct RenderSettings {
     int width = 640;
     int height = 480;
     int samples_per_pixel = 1;
+    /// Antialias edges with one ray per pixel by cone tracing its footprint
+    /// (render/cone_tracer.hpp) instead of with more samples; needs
+    /// samples_per_pixel = 1.
+    bool cone_antialiasing = false;
     int threads = 0;  // 0: all hardware threads
     /// Also fill the image's depth and normal layers (render/image.hpp).
     bool layers = false;

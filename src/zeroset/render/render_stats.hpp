@@ -22,6 +22,13 @@ struct RenderStats {
     std::uint64_t reflection_rays = 0;
     [[nodiscard]] std::uint64_t rays() const { return camera_rays + shadow_rays + reflection_rays; }
     std::uint64_t hits = 0;
+    /// Cone antialiasing's work (render/cone_tracer.hpp); all zero without it.
+    bool cone_antialiasing = false;
+    std::uint64_t cone_steps = 0;
+    std::uint64_t cone_edges = 0;
+    std::uint64_t cone_missed_edges = 0;
+    std::uint64_t cone_gave_up = 0;
+    std::uint64_t cone_evaluations = 0;
     TraceCounters counters;
     /// The distinct objects (leaves) by the method that traces them;
     /// planes count as "plane".

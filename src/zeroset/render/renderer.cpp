@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "zeroset/render/camera_rays.hpp"
+#include "zeroset/render/cone_tracer.hpp"
 #include "zeroset/render/pixel_samples.hpp"
 #include "zeroset/render/scene_tracer.hpp"
 #include "zeroset/render/shading.hpp"
@@ -39,6 +40,7 @@ std::vector<Tile> make_tiles(int width, int height) {
 struct ThreadTotals {
     RenderStats stats;
     ShadingCounters shading;
+    ConeCounters cone;
     std::optional<TraceScratch::NanRecord> first_nan;
     std::optional<std::pair<int, int>> non_finite_pixel;  // the first pixel whose colour overflowed
     std::uint64_t evaluations_counted = 0;                // of this thread's, added to the shared total
@@ -89,8 +91,10 @@ struct NearestSample {
     }
 };
 
+/// The tile's pixels; with a cone tracer, each pixel's one ray is widened
+/// to its footprint's cone, whose edges are blended over what the ray sees.
 void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera, int spp, SceneTracer& tracer,
-                 Image& image, ThreadTotals& totals, StopSignal& signal) {
+                 ConeTracer* cone, Image& image, ThreadTotals& totals, StopSignal& signal) {
     constexpr double far = std::numeric_limits<double>::infinity();
     const bool layers = image.has_layers();
     for (int py = tile.y0; py < tile.y1; ++py) {
@@ -102,13 +106,17 @@ void render_tile(const Tile& tile, const Scene& scene, const CameraRays& camera,
                 const SubPixel sub = pixel_sample(px, py, s, spp);
                 const Ray ray = camera.ray(px, py, sub.x, sub.y);
                 ++totals.stats.camera_rays;
-                if (const auto hit = tracer.closest_hit(ray, far)) {
+                const auto hit = tracer.closest_hit(ray, far);
+                Vec3d seen = scene.background;
+                if (hit) {
                     ++totals.stats.hits;
                     nearest.offer(*hit);
-                    sum += shade(tracer, ray, *hit, totals.shading, scene.image.reflection_depth);
-                } else {
-                    sum += scene.background;
+                    seen = shade(tracer, ray, *hit, totals.shading, scene.image.reflection_depth);
                 }
+                if (cone)
+                    seen = cone->pixel(tracer, ray, hit, seen, totals.shading, scene.image.reflection_depth,
+                                       totals.cone);
+                sum += seen;
             }
             const Vec3d c = sum / static_cast<double>(spp);
             const Vec3f pixel{static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
@@ -176,6 +184,9 @@ void validate(const RenderSettings& s) {
     require_in_range(s.height, 1, max_image_side, "height");
     require_image_fits(s.width, s.height);
     require_in_range(s.samples_per_pixel, 1, max_samples_per_pixel, "samples per pixel");
+    if (s.cone_antialiasing && s.samples_per_pixel != 1)
+        throw RenderError("cone antialiasing traces one ray per pixel: give it 1 sample per pixel, not " +
+                          std::to_string(s.samples_per_pixel) + " (or antialias by samples alone)");
     require_in_range(s.threads, 0, 4096, "threads");
     if (s.max_evaluations && *s.max_evaluations == 0) throw RenderError("the evaluation budget (--max-evaluations) must be at least 1");
 }
@@ -189,6 +200,8 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     const PreparedScene prepared(scene, {settings.method, settings.solver, settings.normals, settings.partition,
                                          settings.width, settings.height, settings.on_prepare_progress});
     const CameraRays camera(scene.camera, settings.width, settings.height);
+    const std::optional<SceneDistance> distance =
+        settings.cone_antialiasing ? std::optional<SceneDistance>(scene) : std::nullopt;
     const double prepare_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::vector<Tile> tiles = make_tiles(settings.width, settings.height);
     const int thread_count = settings.threads > 0
@@ -207,9 +220,12 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
 
     const auto worker = [&](ThreadTotals& mine) {
         SceneTracer tracer(prepared);
+        std::optional<ConeTracer> cone;
+        if (distance) cone.emplace(*distance, camera.footprint_radius());
         signal.allow(tracer, signal.spent);
         for (std::size_t i = next_tile++; i < tiles.size(); i = next_tile++) {
-            render_tile(tiles[i], scene, camera, settings.samples_per_pixel, tracer, result.image, mine, signal);
+            render_tile(tiles[i], scene, camera, settings.samples_per_pixel, tracer, cone ? &*cone : nullptr,
+                        result.image, mine, signal);
             if (settings.on_progress) {
                 std::lock_guard lock(progress_mutex);
                 settings.on_progress(++tiles_done, static_cast<int>(tiles.size()));
@@ -231,6 +247,11 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
         stats.shadow_rays += t.shading.shadow_rays;
         stats.reflection_rays += t.shading.reflection_rays;
         stats.counters += t.stats.counters;
+        stats.cone_steps += t.cone.steps;
+        stats.cone_edges += t.cone.edges;
+        stats.cone_missed_edges += t.cone.missed_edges;
+        stats.cone_gave_up += t.cone.gave_up;
+        stats.cone_evaluations += t.cone.evaluations;
         if (t.first_nan) throw RenderError(nan_message(*t.first_nan));
     }
     if (signal.over_budget) throw RenderError(budget_message(signal.budget, !settings.max_evaluations));
@@ -245,6 +266,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     stats.width = settings.width;
     stats.height = settings.height;
     stats.samples_per_pixel = settings.samples_per_pixel;
+    stats.cone_antialiasing = settings.cone_antialiasing;
     stats.threads = thread_count;
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats.prepare_seconds = prepare_seconds;

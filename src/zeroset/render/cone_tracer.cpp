@@ -1,0 +1,141 @@
+// The cone's march to the ray's hit, its edge samples and their blend (see
+// cone_tracer.hpp).
+#include "zeroset/render/cone_tracer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace zeroset {
+
+double disk_coverage(double u) {
+    if (u >= 1.0) return 0.0;
+    if (u <= -1.0) return 1.0;
+    return (std::acos(u) - u * std::sqrt(1.0 - u * u)) / std::numbers::pi;
+}
+
+ConeTracer::ConeTracer(const SceneDistance& distance, double footprint)
+    : distance_(&distance), probe_(distance), footprint_(footprint) {
+    const Box3& reach = distance.reach();
+    least_step_ = 1e-6 * (reach.valid() ? std::max(reach.diagonal(), 1e-300) : 1.0);
+}
+
+int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeCounters& counters) {
+    const std::uint64_t evaluations_before = probe_.evaluations();
+    const Box3& reach = distance_->reach();
+    const std::optional<Span> span = reach.valid() ? reach.clip(ray, 0.0, t_end) : std::nullopt;
+    int found = 0;
+    if (!span) return found;
+
+    Edge nearest;  // of the stretch the cone is in, while ratio < 1
+    bool in_stretch = false;
+    double t = span->t0, window = span->t1 - span->t0;
+    int steps = 0;
+    for (; t < span->t1 && steps < max_steps && found < max_edges; ++steps) {
+        const double radius = footprint_ * t;
+        const DistanceBound bound = probe_.outside_at(ray.at(t), std::max(window, 2.0 * radius));
+        const double ratio = radius > 0.0 ? bound.distance / radius : 1.0;
+        if (ratio < 1.0) {
+            if (!in_stretch || ratio < nearest.ratio) nearest = {t, ratio, radius, bound};
+            in_stretch = true;
+        } else if (in_stretch) {
+            edges_[static_cast<std::size_t>(found++)] = nearest;
+            in_stretch = false;
+        }
+        const double step = std::max({bound.distance, 0.5 * radius, least_step_});
+        window = 2.0 * step;
+        t += step;
+    }
+    // A stretch still open where the ray hits is the hit surface coming
+    // into the cone: the ray's own colour covers it.
+    if (in_stretch && !ends_on_hit && found < max_edges) edges_[static_cast<std::size_t>(found++)] = nearest;
+    counters.steps += static_cast<std::uint64_t>(steps);
+    if (steps == max_steps) ++counters.gave_up;
+    counters.evaluations += probe_.evaluations() - evaluations_before;
+    return found;
+}
+
+std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, double t_hit, ConeCounters& counters) {
+    const std::uint64_t evaluations_before = probe_.evaluations();
+    Edge deepest{t_hit, 0.0, footprint_ * t_hit, {}};
+    double t = t_hit, depth = 0.0;
+    int steps = 0;
+    bool covered = false;
+    for (; steps < max_steps; ++steps) {
+        t += std::max({depth, 0.5 * footprint_ * t, least_step_});
+        const double radius = footprint_ * t;
+        const Vec3d p = ray.at(t);
+        const DistanceBound inside = probe_.inside_at(p, 2.0 * radius);
+        depth = inside.distance;
+        if (depth >= radius) {
+            covered = true;  // the solid fills the cone here: no silhouette is near
+            break;
+        }
+        if (depth == 0.0 && probe_.outside_at(p, radius).distance > 0.0) break;  // out of the solid again
+        if (depth / radius > deepest.ratio) deepest = {t, depth / radius, radius, inside};
+    }
+    counters.steps += static_cast<std::uint64_t>(steps);
+    counters.evaluations += probe_.evaluations() - evaluations_before;
+    if (steps == max_steps) ++counters.gave_up;
+    if (covered || steps == max_steps || deepest.bound.leaf < 0) return std::nullopt;
+    // A chord through the solid far longer than it is deep passes near a
+    // silhouette; a short one crosses a sheet thinner than the cone, which
+    // still covers the whole pixel when seen face on.
+    if (t - t_hit < 4.0 * deepest.ratio * deepest.radius) return std::nullopt;
+    return deepest;
+}
+
+std::optional<Vec3d> ConeTracer::shade_aimed(SceneTracer& tracer, const Ray& ray, const Edge& edge,
+                                             ShadingCounters& shading, int bounces) {
+    const Vec3d p = ray.at(edge.t);
+    Vec3d toward = probe_.toward_surface(p, edge.bound);
+    toward = toward - ray.dir * dot(toward, ray.dir);  // across the cone, in the plane of its disk
+    const double len = length(toward);
+    if (!(len > 0.0)) return std::nullopt;
+    toward = toward / len;
+    // The middle of the part of the disk beyond the surface, then its rim.
+    const double distance = edge.ratio * edge.radius;
+    for (const double offset : {0.5 * (distance + edge.radius), edge.radius}) {
+        const Ray aimed{ray.origin, normalize(p + toward * offset - ray.origin)};
+        if (const auto hit = tracer.closest_hit(aimed, std::numeric_limits<double>::infinity()))
+            return shade(tracer, aimed, *hit, shading, bounces);
+        if (edge.bound.complement) return tracer.prepared().scene().background;  // past the silhouette: nothing
+    }
+    return std::nullopt;
+}
+
+Vec3d ConeTracer::pixel(SceneTracer& tracer, const Ray& ray, const std::optional<SurfaceHit>& hit,
+                        const Vec3d& ray_color, ShadingCounters& shading, int bounces, ConeCounters& counters) {
+    Vec3d own = ray_color;
+    if (hit) {
+        // The ray's own surface, near its silhouette, leaves part of the cone to what lies behind.
+        if (const std::optional<Edge> inner = find_inner_edge(ray, hit->t, counters)) {
+            if (const std::optional<Vec3d> behind = shade_aimed(tracer, ray, *inner, shading, bounces)) {
+                ++counters.edges;
+                const double alpha = disk_coverage(-inner->ratio);
+                own = ray_color * alpha + *behind * (1.0 - alpha);
+            } else {
+                ++counters.missed_edges;
+            }
+        }
+    }
+    const double t_end = hit ? hit->t : std::numeric_limits<double>::infinity();
+    const int found = find_edges(ray, t_end, hit.has_value(), counters);
+    Vec3d color{};
+    double covered = 0.0;
+    for (int i = 0; i < found; ++i) {
+        const Edge& edge = edges_[static_cast<std::size_t>(i)];
+        const std::optional<Vec3d> seen = shade_aimed(tracer, ray, edge, shading, bounces);
+        if (!seen) {
+            ++counters.missed_edges;
+            continue;
+        }
+        ++counters.edges;
+        const double alpha = (1.0 - covered) * disk_coverage(edge.ratio);
+        color += *seen * alpha;
+        covered += alpha;
+    }
+    return color + own * (1.0 - covered);
+}
+
+}  // namespace zeroset

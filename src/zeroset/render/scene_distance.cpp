@@ -1,0 +1,224 @@
+// The scene tree flattened for distance bounds, and the bounds themselves
+// (see scene_distance.hpp).
+#include "zeroset/render/scene_distance.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+#include "zeroset/expr/lipschitz.hpp"
+
+namespace zeroset {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+/// An upper bound of how much the linear part A of m stretches a length:
+/// the square root of Gershgorin's bound of the largest eigenvalue of AᵀA —
+/// exact for rotations and scales, a little loose for shears.
+double stretch_of(const Mat4& m) {
+    const std::array<Vec3d, 3> columns{m.transform_vector({1, 0, 0}), m.transform_vector({0, 1, 0}),
+                                       m.transform_vector({0, 0, 1})};
+    double largest = 0.0;
+    for (const Vec3d& a : columns) {
+        double row = 0.0;
+        for (const Vec3d& b : columns) row += std::abs(dot(a, b));
+        largest = std::max(largest, row);
+    }
+    return std::sqrt(largest);
+}
+
+/// The distance from p to the bounds (0 inside them).
+double distance_to_bounds(const Vec3d& p, const Bounds& bounds) {
+    if (bounds.kind == Bounds::Kind::None) return 0.0;
+    if (bounds.kind == Bounds::Kind::Sphere) return std::max(length(p - bounds.center) - bounds.radius, 0.0);
+    double sum = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double gap = std::max({bounds.box.lo[axis] - p[axis], p[axis] - bounds.box.hi[axis], 0.0});
+        sum += gap * gap;
+    }
+    return std::sqrt(sum);
+}
+
+/// From p inside the bounds, the distance to their boundary.
+double depth_in_bounds(const Vec3d& p, const Bounds& bounds) {
+    if (bounds.kind == Bounds::Kind::None) return infinity;
+    if (bounds.kind == Bounds::Kind::Sphere) return std::max(bounds.radius - length(p - bounds.center), 0.0);
+    double depth = infinity;
+    for (int axis = 0; axis < 3; ++axis)
+        depth = std::min({depth, p[axis] - bounds.box.lo[axis], bounds.box.hi[axis] - p[axis]});
+    return std::max(depth, 0.0);
+}
+
+Box3 intersect(const Box3& a, const Box3& b) {
+    return {{std::max(a.lo.x, b.lo.x), std::max(a.lo.y, b.lo.y), std::max(a.lo.z, b.lo.z)},
+            {std::min(a.hi.x, b.hi.x), std::min(a.hi.y, b.hi.y), std::min(a.hi.z, b.hi.z)}};
+}
+
+Box3 unite(const Box3& a, const Box3& b) {
+    return {{std::min(a.lo.x, b.lo.x), std::min(a.lo.y, b.lo.y), std::min(a.lo.z, b.lo.z)},
+            {std::max(a.hi.x, b.hi.x), std::max(a.hi.y, b.hi.y), std::max(a.hi.z, b.hi.z)}};
+}
+
+bool is_finite_box(const Box3& box) {
+    return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.lo.z) && std::isfinite(box.hi.x) &&
+           std::isfinite(box.hi.y) && std::isfinite(box.hi.z);
+}
+
+const DistanceBound& smaller(const DistanceBound& a, const DistanceBound& b) { return b.distance < a.distance ? b : a; }
+const DistanceBound& larger(const DistanceBound& a, const DistanceBound& b) { return b.distance > a.distance ? b : a; }
+
+}  // namespace
+
+SceneDistance::SceneDistance(const Scene& scene) {
+    reach_ = {{infinity, infinity, infinity}, {-infinity, -infinity, -infinity}};
+    std::unordered_map<const SceneNode*, int> tape_of;
+    for (const SceneNodePtr& node : scene.nodes) roots_.push_back(add(*node, Mat4::identity(), tape_of));
+}
+
+int SceneDistance::add(const SceneNode& scene_node, const Mat4& to_scene,
+                       std::unordered_map<const SceneNode*, int>& tape_of) {
+    const Mat4 here = to_scene * scene_node.transform;
+    Node node{scene_node.kind, here.inverse().value_or(Mat4::identity()), here, 1.0, {}, -1, {}};
+    node.stretch = stretch_of(node.to_local);
+    if (scene_node.kind == SceneNode::Kind::Object) {
+        const Object& object = scene_node.object;
+        node.bounds = object.bounds;
+        // One tape for each distinct object, however often it is placed.
+        const auto [it, fresh] = tape_of.emplace(&scene_node, static_cast<int>(tapes_.size()));
+        if (fresh) tapes_.push_back(std::make_unique<Tape>(surface_of(object)));
+        node.tape = it->second;
+        const Box3 box = object.bounds.enclosing_box();
+        if (is_finite_box(box)) reach_ = unite(reach_, here.transform_box(box));
+    }
+    const int index = static_cast<int>(nodes_.size());
+    nodes_.push_back(std::move(node));
+    for (const SceneNodePtr& child : scene_node.children) {
+        const int c = add(*child, here, tape_of);
+        nodes_[static_cast<std::size_t>(index)].children.push_back(c);
+    }
+    return index;
+}
+
+DistanceProbe::DistanceProbe(const SceneDistance& scene) : scene_(&scene) {
+    for (const auto& tape : scene.tapes_) {
+        values_.emplace_back(*tape);
+        slopes_.emplace_back(*tape);
+        gradients_.emplace_back(*tape);
+    }
+}
+
+DistanceBound DistanceProbe::outside_at(const Vec3d& p, double reach) {
+    DistanceBound best{reach, -1, false, false};
+    for (const int root : scene_->roots_) best = smaller(best, node_at(root, p, best.distance, true).outside);
+    return best;
+}
+
+DistanceBound DistanceProbe::inside_at(const Vec3d& p, double reach) {
+    DistanceBound deepest{0.0, -1, true, false};
+    for (const int root : scene_->roots_) deepest = larger(deepest, node_at(root, p, reach, false).inside);
+    return deepest;
+}
+
+DistanceProbe::Pair DistanceProbe::node_at(int index, const Vec3d& p, double reach, bool only_outside) {
+    const SceneDistance::Node& node = scene_->nodes_[static_cast<std::size_t>(index)];
+    if (node.kind == SceneNode::Kind::Object) return leaf_at(index, p, reach);
+    Pair pair{{reach, -1, false, false}, {0.0, -1, true, false}};
+    bool first = true;
+    for (const int child : node.children) {
+        // For the distance to it, a union only needs what is nearer than the
+        // nearest so far (the bounds inside then stop at that reach, still true).
+        const bool nearer = only_outside && node.kind == SceneNode::Kind::Group;
+        const Pair c = node_at(child, p, nearer ? pair.outside.distance : reach, only_outside);
+        if (first) {
+            pair = c;
+            first = false;
+        } else if (node.kind == SceneNode::Kind::Group) {
+            pair = {smaller(pair.outside, c.outside), larger(pair.inside, c.inside)};
+        } else if (node.kind == SceneNode::Kind::Intersection) {
+            pair = {larger(pair.outside, c.outside), smaller(pair.inside, c.inside)};
+        } else {  // Difference: the first child less this one, i.e. within its complement
+            pair = {larger(pair.outside, c.inside), smaller(pair.inside, c.outside)};
+        }
+    }
+    return pair;
+}
+
+DistanceProbe::Pair DistanceProbe::leaf_at(int index, const Vec3d& p, double reach) {
+    const SceneDistance::Node& node = scene_->nodes_[static_cast<std::size_t>(index)];
+    const Vec3d q = node.to_local.transform_point(p);
+    const double local_reach = reach * node.stretch;
+    const auto in_scene = [&](double local, bool complement, bool by_bounds) {
+        return DistanceBound{local / node.stretch, index, complement, by_bounds};
+    };
+    const DistanceBound none_inside = in_scene(0.0, true, false);
+    const double outside_bounds = distance_to_bounds(q, node.bounds);
+    if (outside_bounds >= local_reach) return {in_scene(outside_bounds, false, true), none_inside};
+
+    const auto tape = static_cast<std::size_t>(node.tape);
+    const double f = values_[tape](q.x, q.y, q.z);
+    ++evaluations_;
+    if (std::isnan(f)) return {{0.0, -1, false, false}, {0.0, -1, true, false}};  // nothing is known here
+    const Vec3d r{local_reach, local_reach, local_reach};
+    const Box3 near = intersect({q - r, q + r}, node.bounds.enclosing_box());
+    const double slope = lipschitz_bound(slopes_[tape], near).constant;
+    ++evaluations_;
+    const double clear = slope > 0.0 ? std::min(std::abs(f) / slope, local_reach) : local_reach;
+    if (outside_bounds > 0.0 || f > 0.0) {
+        const double by_function = f > 0.0 ? clear : 0.0;
+        return {in_scene(std::max(outside_bounds, by_function), false, outside_bounds >= by_function), none_inside};
+    }
+    const double depth = depth_in_bounds(q, node.bounds);
+    return {in_scene(0.0, false, false), in_scene(std::min(clear, depth), true, depth < clear)};
+}
+
+namespace {
+
+/// From q, the way to the bounds' nearest point (outside them) or nearest
+/// face (inside them), in the bounds' space.
+Vec3d toward_bounds(const Vec3d& q, const Bounds& bounds, bool inside) {
+    if (bounds.kind == Bounds::Kind::Sphere) return inside ? q - bounds.center : bounds.center - q;
+    if (bounds.kind == Bounds::Kind::None) return {};
+    const Box3& box = bounds.box;
+    if (!inside) {
+        Vec3d v;
+        for (int axis = 0; axis < 3; ++axis) v[axis] = std::clamp(q[axis], box.lo[axis], box.hi[axis]) - q[axis];
+        return v;
+    }
+    Vec3d v;
+    double nearest = infinity;
+    for (int axis = 0; axis < 3; ++axis)
+        for (const double side : {-1.0, 1.0}) {
+            const double gap = side < 0.0 ? q[axis] - box.lo[axis] : box.hi[axis] - q[axis];
+            if (gap >= nearest) continue;
+            nearest = gap;
+            v = {};
+            v[axis] = side;
+        }
+    return v;
+}
+
+}  // namespace
+
+Vec3d DistanceProbe::toward_surface(const Vec3d& p, const DistanceBound& bound) {
+    if (bound.leaf < 0) return {};
+    const SceneDistance::Node& node = scene_->nodes_[static_cast<std::size_t>(bound.leaf)];
+    const Vec3d q = node.to_local.transform_point(p);
+    Vec3d way;
+    if (bound.by_bounds) {
+        way = node.to_scene.transform_vector(toward_bounds(q, node.bounds, bound.complement));
+    } else {
+        const Dual<double> f = evaluate_gradient(gradients_[static_cast<std::size_t>(node.tape)], q);
+        ++evaluations_;
+        const Vec3d g = node.to_local.transpose_transform_vector({f.g.x, f.g.y, f.g.z});
+        way = bound.complement ? g : -g;
+    }
+    const double len = length(way);
+    if (!(len > 0.0) || !std::isfinite(len)) return {};
+    return way / len;
+}
+
+}  // namespace zeroset

@@ -1,0 +1,135 @@
+// The scene's distance bound must never claim more room than there is: at
+// random points, no point of any solid lies nearer than the bound (checked
+// by point membership, apart from the bound's own reasoning), and for
+// spheres the bound comes close to the true distance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+
+#include "zeroset/render/scene_distance.hpp"
+
+namespace zeroset {
+namespace {
+
+Expr ball(const Vec3d& c, double r) {
+    return square(var_x() - c.x) + square(var_y() - c.y) + square(var_z() - c.z) - r * r;
+}
+
+SceneNodePtr object_node(const Expr& f, const Box3& box, const Mat4& transform = Mat4::identity()) {
+    Object o;
+    o.surface = f;
+    o.bounds = Bounds::make_box(box);
+    auto node = std::make_shared<SceneNode>(*make_object_node(o));
+    node->transform = transform;
+    return node;
+}
+
+SceneNodePtr combine(SceneNode::Kind kind, std::vector<SceneNodePtr> children) {
+    auto node = std::make_shared<SceneNode>();
+    node->kind = kind;
+    node->children = std::move(children);
+    return node;
+}
+
+using Membership = std::function<bool(const Vec3d&)>;
+
+/// Random points around the scene: at each, no point sampled in the ball of
+/// the bound's radius is inside a solid. Returns how many points had a bound > 0.
+int check_bound_is_clear(const Scene& scene, const Membership& inside, double reach) {
+    const SceneDistance distance(scene);
+    DistanceProbe probe(distance);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> coordinate(-4.0, 4.0), unit(-1.0, 1.0);
+    int positive = 0;
+    for (int i = 0; i < 400; ++i) {
+        const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
+        const DistanceBound bound = probe.outside_at(p, reach);
+        EXPECT_GE(bound.distance, 0.0);
+        EXPECT_LE(bound.distance, reach + 1e-12);
+        if (inside(p)) {
+            EXPECT_EQ(bound.distance, 0.0) << "inside at " << p.x << ", " << p.y << ", " << p.z;
+            continue;
+        }
+        if (bound.distance > 0.0) ++positive;
+        for (int j = 0; j < 200; ++j) {
+            Vec3d v{unit(random), unit(random), unit(random)};
+            if (!(length(v) > 1e-3)) continue;
+            v = normalize(v) * (0.999 * bound.distance * std::cbrt(std::abs(unit(random))));
+            const Vec3d q = p + v;
+            if (inside(q)) {
+                ADD_FAILURE() << "a solid point at distance " << length(v) << " < bound " << bound.distance;
+                return -1;
+            }
+        }
+    }
+    return positive;
+}
+
+const Box3 wide{{-3, -3, -3}, {3, 3, 3}};
+
+bool in_ball(const Vec3d& p, const Vec3d& c, double r) { return length(p - c) < r; }
+
+TEST(SceneDistance, SphereBoundIsClearAndNearlyTight) {
+    Scene scene;
+    scene.nodes.push_back(object_node(ball({0, 0, 0}, 1), wide));
+    const SceneDistance distance(scene);
+    DistanceProbe probe(distance);
+    // Close to the surface the interval gradient is nearly |∇f| = 2|p|.
+    for (const double r : {1.01, 1.1, 1.5}) {
+        const double d = probe.outside_at({r, 0, 0}, 2.0 * (r - 1.0)).distance;
+        EXPECT_LE(d, r - 1.0);
+        EXPECT_GE(d, 0.3 * (r - 1.0)) << r;
+    }
+    EXPECT_GT(check_bound_is_clear(scene, [](const Vec3d& p) { return in_ball(p, {0, 0, 0}, 1); }, 1.0), 100);
+}
+
+TEST(SceneDistance, UnionIntersectionAndDifferenceBoundsAreClear) {
+    const SceneNodePtr a = object_node(ball({-0.5, 0, 0}, 1), wide), b = object_node(ball({0.6, 0.2, 0}, 0.9), wide);
+    const auto in_a = [](const Vec3d& p) { return in_ball(p, {-0.5, 0, 0}, 1); };
+    const auto in_b = [](const Vec3d& p) { return in_ball(p, {0.6, 0.2, 0}, 0.9); };
+    for (const auto kind : {SceneNode::Kind::Group, SceneNode::Kind::Intersection, SceneNode::Kind::Difference}) {
+        Scene scene;
+        scene.nodes.push_back(combine(kind, {a, b}));
+        const Membership inside = [&](const Vec3d& p) {
+            if (kind == SceneNode::Kind::Group) return in_a(p) || in_b(p);
+            if (kind == SceneNode::Kind::Intersection) return in_a(p) && in_b(p);
+            return in_a(p) && !in_b(p);
+        };
+        EXPECT_GT(check_bound_is_clear(scene, inside, 1.5), 100) << static_cast<int>(kind);
+    }
+}
+
+TEST(SceneDistance, TransformsAndBoundsThatCutAreHonoured) {
+    // A unit ball stretched by 2 along x and moved; and a ball cut in half by its bounds.
+    const Mat4 placed = Mat4::translate({1, 0.5, 0}) * Mat4::scale({2, 0.7, 1});
+    const Box3 half{{-3, -3, -3}, {0, 3, 3}};
+    Scene scene;
+    scene.nodes.push_back(object_node(ball({0, 0, 0}, 1), wide, placed));
+    scene.nodes.push_back(object_node(ball({0, -2, 0}, 1.2), half));
+    const Mat4 to_local = placed.inverse().value();
+    const Membership inside = [&](const Vec3d& p) {
+        const bool in_stretched = in_ball(to_local.transform_point(p), {0, 0, 0}, 1);
+        const bool in_half = in_ball(p, {0, -2, 0}, 1.2) && p.x <= 0.0;
+        return in_stretched || in_half;
+    };
+    EXPECT_GT(check_bound_is_clear(scene, inside, 2.0), 100);
+}
+
+TEST(SceneDistance, DirectionPointsAtTheNearestSurface) {
+    Scene scene;
+    scene.nodes.push_back(object_node(ball({1, 0, 0}, 1), wide));
+    const SceneDistance distance(scene);
+    DistanceProbe probe(distance);
+    const Vec3d p{1, 2.5, 0};
+    const DistanceBound bound = probe.outside_at(p, 3.0);
+    ASSERT_GE(bound.leaf, 0);
+    const Vec3d toward = probe.toward_surface(p, bound);
+    EXPECT_NEAR(toward.x, 0.0, 1e-12);
+    EXPECT_NEAR(toward.y, -1.0, 1e-12);
+    EXPECT_NEAR(toward.z, 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace zeroset
