@@ -36,7 +36,7 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
         const DistanceBound bound = probe_.outside_at(ray.at(t), std::max(window, 2.0 * radius));
         const double ratio = radius > 0.0 ? bound.distance / radius : 1.0;
         if (ratio < 1.0) {
-            if (!in_stretch || ratio < nearest.ratio) nearest = {t, ratio, radius, bound};
+            if (!in_stretch || ratio < nearest.ratio) nearest = {t, ratio, radius, 0.5 * (t + t_end), bound};
             in_stretch = true;
         } else if (in_stretch) {
             edges_[static_cast<std::size_t>(found++)] = nearest;
@@ -57,7 +57,7 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
 
 std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, double t_hit, ConeCounters& counters) {
     const std::uint64_t evaluations_before = probe_.evaluations();
-    Edge deepest{t_hit, 0.0, footprint_ * t_hit, {}};
+    Edge deepest{t_hit, 0.0, footprint_ * t_hit, t_hit, {}};
     double t = t_hit, depth = 0.0;
     int steps = 0;
     bool covered = false;
@@ -72,7 +72,7 @@ std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, doub
             break;
         }
         if (depth == 0.0 && probe_.outside_at(p, radius).distance > 0.0) break;  // out of the solid again
-        if (depth / radius > deepest.ratio) deepest = {t, depth / radius, radius, inside};
+        if (depth / radius > deepest.ratio) deepest = {t, depth / radius, radius, t, inside};
     }
     counters.steps += static_cast<std::uint64_t>(steps);
     counters.evaluations += probe_.evaluations() - evaluations_before;
@@ -82,57 +82,75 @@ std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, doub
     // silhouette; a short one crosses a sheet thinner than the cone, which
     // still covers the whole pixel when seen face on.
     if (t - t_hit < 4.0 * deepest.ratio * deepest.radius) return std::nullopt;
+    deepest.t_far = t;  // where the ray leaves the solid: an aimed ray meeting it sooner meets it
     return deepest;
 }
 
-std::optional<Vec3d> ConeTracer::shade_aimed(SceneTracer& tracer, const Ray& ray, const Edge& edge,
-                                             ShadingCounters& shading, int bounces) {
+std::optional<ConeTracer::EdgeSample> ConeTracer::resolve(SceneTracer& tracer, const Ray& ray, const Edge& edge,
+                                                         ShadingCounters& shading, int bounces, ConeCounters& counters) {
     const Vec3d p = ray.at(edge.t);
     Vec3d toward = probe_.toward_surface(p, edge.bound);
     toward = toward - ray.dir * dot(toward, ray.dir);  // across the cone, in the plane of its disk
     const double len = length(toward);
     if (!(len > 0.0)) return std::nullopt;
     toward = toward / len;
-    // The middle of the part of the disk beyond the surface, then its rim.
-    const double distance = edge.ratio * edge.radius;
-    for (const double offset : {0.5 * (distance + edge.radius), edge.radius}) {
-        const Ray aimed{ray.origin, normalize(p + toward * offset - ray.origin)};
-        if (const auto hit = tracer.closest_hit(aimed, std::numeric_limits<double>::infinity()))
-            return shade(tracer, aimed, *hit, shading, bounces);
-        if (edge.bound.complement) return tracer.prepared().scene().background;  // past the silhouette: nothing
+
+    // A ray aimed at p + s·toward is past the edge when it meets the edge's
+    // own surface (an outer edge) or misses the ray's own solid (an inner
+    // one); either shows before t_far. At s = d the bound says it is not.
+    const bool inner = edge.bound.complement;
+    std::optional<SurfaceHit> seen;
+    Ray seen_ray = ray;
+    const auto past = [&](double s) {
+        const Ray aimed{ray.origin, normalize(p + toward * s - ray.origin)};
+        ++counters.aimed_rays;
+        const std::optional<SurfaceHit> hit = tracer.closest_hit(aimed, std::numeric_limits<double>::infinity());
+        const bool meets = hit && hit->t < edge.t_far;
+        if (meets == inner) return false;
+        seen = hit;
+        seen_ray = aimed;
+        return true;
+    };
+    double near = edge.ratio * edge.radius, far = 0.5 * (near + edge.radius);
+    if (!past(far)) {
+        near = far;
+        far = edge.radius;
+        if (!past(far)) return std::nullopt;  // the surface does not reach into the cone after all
     }
-    return std::nullopt;
+    for (int i = 0; i < edge_refinements; ++i) {
+        const double middle = 0.5 * (near + far);
+        if (past(middle)) far = middle;
+        else near = middle;
+    }
+    // What lies past the edge covers the disk beyond it: the edge's
+    // surface, for an outer edge, and what is behind, for an inner one.
+    const double beyond = disk_coverage(0.5 * (near + far) / edge.radius);
+    const Vec3d color = seen ? shade(tracer, seen_ray, *seen, shading, bounces) : tracer.prepared().scene().background;
+    return EdgeSample{color, beyond};
 }
 
 Vec3d ConeTracer::pixel(SceneTracer& tracer, const Ray& ray, const std::optional<SurfaceHit>& hit,
                         const Vec3d& ray_color, ShadingCounters& shading, int bounces, ConeCounters& counters) {
+    const auto resolved = [&](const Edge& edge) {
+        std::optional<EdgeSample> sample = resolve(tracer, ray, edge, shading, bounces, counters);
+        ++(sample ? counters.edges : counters.missed_edges);
+        return sample;
+    };
     Vec3d own = ray_color;
     if (hit) {
         // The ray's own surface, near its silhouette, leaves part of the cone to what lies behind.
-        if (const std::optional<Edge> inner = find_inner_edge(ray, hit->t, counters)) {
-            if (const std::optional<Vec3d> behind = shade_aimed(tracer, ray, *inner, shading, bounces)) {
-                ++counters.edges;
-                const double alpha = disk_coverage(-inner->ratio);
-                own = ray_color * alpha + *behind * (1.0 - alpha);
-            } else {
-                ++counters.missed_edges;
-            }
-        }
+        if (const std::optional<Edge> inner = find_inner_edge(ray, hit->t, counters))
+            if (const auto behind = resolved(*inner)) own = ray_color * (1.0 - behind->coverage) + behind->color * behind->coverage;
     }
     const double t_end = hit ? hit->t : std::numeric_limits<double>::infinity();
     const int found = find_edges(ray, t_end, hit.has_value(), counters);
     Vec3d color{};
     double covered = 0.0;
     for (int i = 0; i < found; ++i) {
-        const Edge& edge = edges_[static_cast<std::size_t>(i)];
-        const std::optional<Vec3d> seen = shade_aimed(tracer, ray, edge, shading, bounces);
-        if (!seen) {
-            ++counters.missed_edges;
-            continue;
-        }
-        ++counters.edges;
-        const double alpha = (1.0 - covered) * disk_coverage(edge.ratio);
-        color += *seen * alpha;
+        const auto sample = resolved(edges_[static_cast<std::size_t>(i)]);
+        if (!sample) continue;
+        const double alpha = (1.0 - covered) * sample->coverage;
+        color += sample->color * alpha;
         covered += alpha;
     }
     return color + own * (1.0 - covered);

@@ -1,27 +1,32 @@
 // ConeTracer: antialiased sphere tracing (Hart, "Sphere tracing", 1993; the
 // survey's [Hart, 1993], §5.2): one ray per pixel, widened to the cone of
-// the pixel's footprint, whose radius grows as r(t) = κ·t.
+// the pixel's footprint, whose radius grows as r(t) = κ·t (a disk of one
+// pixel's area).
 //
-// The ray itself is traced first, as every ray is (its first hit is
-// guaranteed by the object's method). The cone then marches from the eye to
-// that hit with the scene's distance bound d(t) (render/scene_distance.hpp).
-// Where d(t) < r(t), a surface the ray misses passes through the cone: a
-// silhouette. Each stretch of t where it does gives one edge sample at its
-// narrowest point, covering the share α of the pixel that a straight edge
-// at distance d from the centre cuts from a disk of radius r (disk_coverage).
-// The edge is shaded by a ray aimed from the eye at the covered part of the
-// disk, so that it gets its own object's normal, material and shadows; the
-// samples are composited front to back, and the ray's own colour fills what
-// they leave: C = Σ (1 − A_i) α_i c_i + (1 − A) c_ray.
-//
-// As in Hart's method, the edge is blended on its outer side only: a pixel
-// whose centre ray hits is covered by that surface in full.
+// The ray itself is traced first, as every ray is, so its first hit is
+// guaranteed by its object's method. The cone then looks for silhouettes
+// with the scene's distance bound (render/scene_distance.hpp):
+//   - outer edges: from the eye to the hit, where d(t) < r(t) a surface
+//     the ray misses passes through the cone; each stretch of t where it
+//     does is one edge, taken where d/r is least;
+//   - the inner edge: past the hit, along the chord through the solid, the
+//     depth bound staying below r(t) over a chord far longer than it is
+//     deep means the ray runs near the solid's silhouette.
+// Hart blends an edge by the share of the disk the bound implies; a bound
+// is a lower one, often loose, so here it only says where to look. Rays
+// from the eye, aimed across the cone at the edge's surface and bisected,
+// find where the surface really crosses the disk (to 1/32 of r), and the
+// share beyond a straight edge there (disk_coverage) weights the colour
+// the last ray past it sees — its own object's normal, material and
+// shadows. Samples are composited front to back over what the ray sees:
+// C = Σ (1 − A_i) α_i c_i + (1 − A) c_ray.
 //
 // Steps are max(d, r/2), at least a millionth of the scene's size, so t
-// grows at least geometrically and the march ends; it stops, keeping what
-// it found, after max_steps. Steps beyond the ray's first hit are never
-// taken, so the antialiasing never changes which surface a pixel's centre
-// sees.
+// grows at least geometrically and each march ends; it stops, keeping what
+// it found, after max_steps. The outer march never passes the ray's hit,
+// so the antialiasing never changes which surface a pixel's centre sees.
+// Not antialiased: shadow edges, reflections, and surfaces beyond the box
+// of the bounded objects (an infinite plane's horizon).
 #pragma once
 
 #include <array>
@@ -41,7 +46,8 @@ double disk_coverage(double u);
 struct ConeCounters {
     std::uint64_t steps = 0;         // distance bounds taken along cones
     std::uint64_t edges = 0;         // edge samples shaded
-    std::uint64_t missed_edges = 0;  // edges whose aimed ray found no surface (not blended)
+    std::uint64_t missed_edges = 0;  // edges whose aimed rays found no surface in the cone (not blended)
+    std::uint64_t aimed_rays = 0;    // rays aimed across edges
     std::uint64_t gave_up = 0;       // cones stopped at max_steps
     std::uint64_t evaluations = 0;   // of the distance bounds
 };
@@ -52,6 +58,9 @@ public:
     static constexpr int max_steps = 4096;
     /// Edge samples one pixel may blend; further ones are not looked for.
     static constexpr int max_edges = 8;
+    /// Bisections of an edge's place across the disk: to 1/32 of the
+    /// cone's radius at worst.
+    static constexpr int edge_refinements = 4;
 
     /// `footprint`: the cone's radius per unit of t along a ray.
     ConeTracer(const SceneDistance& distance, double footprint);
@@ -68,7 +77,13 @@ private:
         double t = 0.0;
         double ratio = 1.0;  // d / r there
         double radius = 0.0;
+        double t_far = 0.0;  // an aimed ray that meets a surface before this meets the edge's
         DistanceBound bound;
+    };
+    /// What an edge shows and the share of the disk it shows it in.
+    struct EdgeSample {
+        Vec3d color;
+        double coverage;
     };
     /// The edges along the ray up to t_end, nearest first; returns how many.
     int find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeCounters& counters);
@@ -76,10 +91,11 @@ private:
     /// least deep, when that is less than the cone's radius: the cone there
     /// reaches past the solid's silhouette.
     std::optional<Edge> find_inner_edge(const Ray& ray, double t_hit, ConeCounters& counters);
-    /// The colour a ray from the eye sees when aimed across the edge's
-    /// surface (past it, for an inner edge), if it finds what is there.
-    std::optional<Vec3d> shade_aimed(SceneTracer& tracer, const Ray& ray, const Edge& edge, ShadingCounters& shading,
-                                     int bounces);
+    /// Where the edge's surface crosses the cone's disk, found by rays from
+    /// the eye aimed across it and bisected (edge_refinements times), and
+    /// the colour past it; nothing when no surface reaches into the cone.
+    std::optional<EdgeSample> resolve(SceneTracer& tracer, const Ray& ray, const Edge& edge, ShadingCounters& shading,
+                                      int bounces, ConeCounters& counters);
 
     const SceneDistance* distance_;
     DistanceProbe probe_;

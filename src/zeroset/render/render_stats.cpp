@@ -30,9 +30,10 @@ std::string summary_line(const RenderStats& s) {
     if (s.counters.failed_queries > 0)
         line += "; " + count(s.counters.failed_queries) + " ray queries failed (a method's budget spent: no hit there)";
     if (s.cone_antialiasing) {
-        line += "; cone antialiasing: " + count(s.cone_edges) + " edge samples, " + count(s.cone_steps) + " steps, " +
+        line += "; cone antialiasing: " + count(s.cone_edges) + " edges (" + count(s.cone_aimed_rays) + " rays aimed across them), " +
+                count(s.cone_steps) + " steps, " +
                 count(s.cone_evaluations) + " evaluations";
-        if (s.cone_missed_edges) line += ", " + count(s.cone_missed_edges) + " edges not found by their aimed ray";
+        if (s.cone_missed_edges) line += ", " + count(s.cone_missed_edges) + " edges no surface reached into";
         if (s.cone_gave_up) line += ", " + count(s.cone_gave_up) + " cones stopped at their step limit";
     }
     if (!s.methods.empty()) {

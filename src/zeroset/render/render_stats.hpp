@@ -26,6 +26,7 @@ struct RenderStats {
     bool cone_antialiasing = false;
     std::uint64_t cone_steps = 0;
     std::uint64_t cone_edges = 0;
+    std::uint64_t cone_aimed_rays = 0;
     std::uint64_t cone_missed_edges = 0;
     std::uint64_t cone_gave_up = 0;
     std::uint64_t cone_evaluations = 0;

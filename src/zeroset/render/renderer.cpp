@@ -249,6 +249,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
         stats.counters += t.stats.counters;
         stats.cone_steps += t.cone.steps;
         stats.cone_edges += t.cone.edges;
+        stats.cone_aimed_rays += t.cone.aimed_rays;
         stats.cone_missed_edges += t.cone.missed_edges;
         stats.cone_gave_up += t.cone.gave_up;
         stats.cone_evaluations += t.cone.evaluations;
