@@ -206,6 +206,20 @@ TEST_F(Cli, NonPositiveImageSizeOnCommandLineIsAnError) {
     }
 }
 
+TEST_F(Cli, ConeAntialiasingOptionIsCheckedBeforeRendering) {
+    const Outcome unknown = run("render -o out.png --width 8 --height 8 --antialias cones");
+    EXPECT_NE(unknown.status, 0);
+    EXPECT_NE(unknown.err.find("unknown antialiasing 'cones' (known: samples, cone)"), std::string::npos) << unknown.err;
+    const Outcome both = run("render -o out.png --width 8 --height 8 --antialias cone --spp 4");
+    EXPECT_NE(both.status, 0);
+    EXPECT_NE(both.err.find("cone antialiasing traces one ray per pixel"), std::string::npos) << both.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+    const Outcome fine = run("render -o out.png --width 32 --height 24 --antialias cone");
+    EXPECT_EQ(fine.status, 0) << fine.err;
+    EXPECT_NE(fine.err.find("cone antialiasing:"), std::string::npos) << fine.err;
+    EXPECT_TRUE(fs::exists(dir_ / "out.png"));
+}
+
 TEST_F(Cli, BadOutputAndMissingSceneAreErrors) {
     const Outcome jpg = run("render -o out.jpg --width 8 --height 8");
     EXPECT_NE(jpg.status, 0);

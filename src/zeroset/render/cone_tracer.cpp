@@ -31,12 +31,16 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
     bool in_stretch = false;
     double t = span->t0, window = span->t1 - span->t0;
     int steps = 0;
-    for (; t < span->t1 && steps < max_steps && found < max_edges; ++steps) {
+    for (; t < span->t1 && steps < max_steps && found < max_edges - 1; ++steps) {
         const double radius = footprint_ * t;
         const DistanceBound bound = probe_.outside_at(ray.at(t), std::max(window, 2.0 * radius));
         const double ratio = radius > 0.0 ? bound.distance / radius : 1.0;
         if (ratio < 1.0) {
-            if (!in_stretch || ratio < nearest.ratio) nearest = {t, ratio, radius, 0.5 * (t + t_end), bound};
+            // Another surface taking over the bound ends the stretch of the
+            // one before (an edge just in front of the surface hit, say).
+            const bool other = in_stretch && bound.leaf != nearest.bound.leaf && bound.leaf >= 0 && nearest.bound.leaf >= 0;
+            if (other) edges_[static_cast<std::size_t>(found++)] = nearest;
+            if (!in_stretch || other || ratio < nearest.ratio) nearest = {t, ratio, radius, 0.5 * (t + t_end), bound};
             in_stretch = true;
         } else if (in_stretch) {
             edges_[static_cast<std::size_t>(found++)] = nearest;
@@ -48,7 +52,7 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
     }
     // A stretch still open where the ray hits is the hit surface coming
     // into the cone: the ray's own colour covers it.
-    if (in_stretch && !ends_on_hit && found < max_edges) edges_[static_cast<std::size_t>(found++)] = nearest;
+    if (in_stretch && !ends_on_hit) edges_[static_cast<std::size_t>(found++)] = nearest;
     counters.steps += static_cast<std::uint64_t>(steps);
     if (steps == max_steps) ++counters.gave_up;
     counters.evaluations += probe_.evaluations() - evaluations_before;
@@ -86,14 +90,37 @@ std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, doub
     return deepest;
 }
 
+std::optional<Vec3d> ConeTracer::across_edge(const Ray& ray, const Edge& edge) {
+    // Two directions spanning the disk, perpendicular to the ray.
+    const Vec3d& d = ray.dir;
+    const Vec3d helper = std::abs(d.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+    const Vec3d e1 = normalize(cross(d, helper)), e2 = cross(d, e1);
+    const Vec3d p = ray.at(edge.t);
+    const double h = 0.5 * edge.radius;
+    const bool inner = edge.bound.complement;
+    const auto bound = [&](const Vec3d& q) {
+        return inner ? probe_.inside_at(q, 2.0 * edge.radius).distance
+                     : probe_.outside_at(q, 2.0 * edge.radius).distance;
+    };
+    // Down the bound across the disk — the distance to the solid (outer
+    // edges) or the depth in it (inner ones) — whatever the surface's shape — a crease or a
+    // CSG edge has no one gradient that says it.
+    Vec3d way = e1 * (bound(p - e1 * h) - bound(p + e1 * h)) + e2 * (bound(p - e2 * h) - bound(p + e2 * h));
+    if (!(length(way) > 0.0)) {  // flat across the disk: the surface's own gradient
+        way = probe_.toward_surface(p, edge.bound);
+        way = way - d * dot(way, d);
+    }
+    const double len = length(way);
+    if (!(len > 0.0) || !std::isfinite(len)) return std::nullopt;
+    return way / len;
+}
+
 std::optional<ConeTracer::EdgeSample> ConeTracer::resolve(SceneTracer& tracer, const Ray& ray, const Edge& edge,
                                                          ShadingCounters& shading, int bounces, ConeCounters& counters) {
     const Vec3d p = ray.at(edge.t);
-    Vec3d toward = probe_.toward_surface(p, edge.bound);
-    toward = toward - ray.dir * dot(toward, ray.dir);  // across the cone, in the plane of its disk
-    const double len = length(toward);
-    if (!(len > 0.0)) return std::nullopt;
-    toward = toward / len;
+    const std::optional<Vec3d> across = across_edge(ray, edge);
+    if (!across) return std::nullopt;
+    const Vec3d toward = *across;
 
     // A ray aimed at p + s·toward is past the edge when it meets the edge's
     // own surface (an outer edge) or misses the ray's own solid (an inner

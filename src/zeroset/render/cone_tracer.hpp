@@ -91,6 +91,10 @@ private:
     /// least deep, when that is less than the cone's radius: the cone there
     /// reaches past the solid's silhouette.
     std::optional<Edge> find_inner_edge(const Ray& ray, double t_hit, ConeCounters& counters);
+    /// The unit direction across the cone (perpendicular to the ray) in
+    /// which the edge's surface lies (an outer edge) or ends (an inner one):
+    /// down the distance bound's differences across the disk.
+    std::optional<Vec3d> across_edge(const Ray& ray, const Edge& edge);
     /// Where the edge's surface crosses the cone's disk, found by rays from
     /// the eye aimed across it and bisected (edge_refinements times), and
     /// the colour past it; nothing when no surface reaches into the cone.
