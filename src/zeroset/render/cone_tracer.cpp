@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "zeroset/accel/primitive.hpp"
+
 namespace zeroset {
 
 double disk_coverage(double u) {
@@ -20,39 +22,85 @@ ConeTracer::ConeTracer(const SceneDistance& distance, double footprint)
     least_step_ = 1e-6 * (reach.valid() ? std::max(reach.diagonal(), 1e-300) : 1.0);
 }
 
+void ConeTracer::find_windows(const Ray& ray, const Span& span) {
+    windows_.clear();
+    const std::vector<Box3>& boxes = distance_->root_boxes();
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const Box3& box = boxes[i];
+        if (!box.valid()) continue;
+        // Grown by the cone's widest radius over the box: the distance from
+        // the eye to its farthest corner bounds t in it.
+        Box3 grown = box;
+        if (is_bounded(box)) {
+            double farthest = 0.0;
+            for (int corner = 0; corner < 8; ++corner) {
+                const Vec3d c{corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y,
+                              corner & 4 ? box.hi.z : box.lo.z};
+                farthest = std::max(farthest, length(c - ray.origin));
+            }
+            const double margin = footprint_ * farthest * 1.01 + least_step_;
+            grown = {box.lo - Vec3d{margin, margin, margin}, box.hi + Vec3d{margin, margin, margin}};
+        }
+        if (const std::optional<Span> in = grown.clip(ray, span.t0, span.t1))
+            windows_.push_back({*in, static_cast<int>(i)});
+    }
+    std::sort(windows_.begin(), windows_.end(), [](const Window& a, const Window& b) { return a.span.t0 < b.span.t0; });
+}
+
 int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeCounters& counters) {
     const std::uint64_t evaluations_before = probe_.evaluations();
     const Box3& reach = distance_->reach();
     const std::optional<Span> span = reach.valid() ? reach.clip(ray, 0.0, t_end) : std::nullopt;
     int found = 0;
     if (!span) return found;
+    find_windows(ray, *span);
 
     Edge nearest;  // of the stretch the cone is in, while ratio < 1
     bool in_stretch = false;
+    const auto close_stretch = [&] {
+        if (in_stretch) edges_[static_cast<std::size_t>(found++)] = nearest;
+        in_stretch = false;
+    };
     double t = span->t0, window = span->t1 - span->t0;
     int steps = 0;
     for (; t < span->t1 && steps < max_steps && found < max_edges - 1; ++steps) {
+        // Only the top-level nodes whose grown boxes the ray is in can come
+        // within the cone; with none, the march jumps to the next one's box.
+        active_.clear();
+        double next_start = span->t1;
+        for (const Window& w : windows_) {
+            if (w.span.t0 > t) {
+                next_start = std::min(next_start, w.span.t0);
+                break;  // sorted by start
+            }
+            if (w.span.t1 >= t) active_.push_back(w.root);
+        }
+        if (active_.empty()) {
+            close_stretch();
+            t = next_start;
+            window = span->t1 - t;
+            continue;
+        }
         const double radius = footprint_ * t;
-        const DistanceBound bound = probe_.outside_at(ray.at(t), std::max(window, 2.0 * radius));
+        const DistanceBound bound = probe_.outside_at(ray.at(t), std::max(window, 2.0 * radius), active_);
         const double ratio = radius > 0.0 ? bound.distance / radius : 1.0;
         if (ratio < 1.0) {
             // Another surface taking over the bound ends the stretch of the
             // one before (an edge just in front of the surface hit, say).
-            const bool other = in_stretch && bound.leaf != nearest.bound.leaf && bound.leaf >= 0 && nearest.bound.leaf >= 0;
-            if (other) edges_[static_cast<std::size_t>(found++)] = nearest;
-            if (!in_stretch || other || ratio < nearest.ratio) nearest = {t, ratio, radius, 0.5 * (t + t_end), bound};
+            if (in_stretch && bound.leaf != nearest.bound.leaf && bound.leaf >= 0 && nearest.bound.leaf >= 0)
+                close_stretch();
+            if (!in_stretch || ratio < nearest.ratio) nearest = {t, ratio, radius, 0.5 * (t + t_end), bound};
             in_stretch = true;
-        } else if (in_stretch) {
-            edges_[static_cast<std::size_t>(found++)] = nearest;
-            in_stretch = false;
+        } else {
+            close_stretch();
         }
         const double step = std::max({bound.distance, 0.5 * radius, least_step_});
         window = 2.0 * step;
-        t += step;
+        t = std::min(t + step, std::max(next_start, t + least_step_));
     }
     // A stretch still open where the ray hits is the hit surface coming
     // into the cone: the ray's own colour covers it.
-    if (in_stretch && !ends_on_hit) edges_[static_cast<std::size_t>(found++)] = nearest;
+    if (!ends_on_hit) close_stretch();
     counters.steps += static_cast<std::uint64_t>(steps);
     if (steps == max_steps) ++counters.gave_up;
     counters.evaluations += probe_.evaluations() - evaluations_before;

@@ -32,6 +32,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "zeroset/render/scene_distance.hpp"
 #include "zeroset/render/scene_tracer.hpp"
@@ -85,6 +86,9 @@ private:
         Vec3d color;
         double coverage;
     };
+    /// Where along the ray each top-level node can come within the cone:
+    /// its box grown by the cone's radius, clipped to span; sorted by start.
+    void find_windows(const Ray& ray, const Span& span);
     /// The edges along the ray up to t_end, nearest first; returns how many.
     int find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeCounters& counters);
     /// Where the chord of the ray through the solid it hits at t_hit lies
@@ -106,6 +110,12 @@ private:
     double footprint_;
     double least_step_;
     std::array<Edge, max_edges> edges_{};
+    struct Window {
+        Span span;
+        int root;
+    };
+    std::vector<Window> windows_;
+    std::vector<int> active_;  // the roots whose windows hold the march's t
 };
 
 }  // namespace zeroset

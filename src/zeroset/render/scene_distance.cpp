@@ -8,6 +8,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "zeroset/accel/primitive.hpp"
 #include "zeroset/expr/lipschitz.hpp"
 
 namespace zeroset {
@@ -63,11 +64,6 @@ Box3 unite(const Box3& a, const Box3& b) {
             {std::max(a.hi.x, b.hi.x), std::max(a.hi.y, b.hi.y), std::max(a.hi.z, b.hi.z)}};
 }
 
-bool is_finite_box(const Box3& box) {
-    return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.lo.z) && std::isfinite(box.hi.x) &&
-           std::isfinite(box.hi.y) && std::isfinite(box.hi.z);
-}
-
 const DistanceBound& smaller(const DistanceBound& a, const DistanceBound& b) { return b.distance < a.distance ? b : a; }
 const DistanceBound& larger(const DistanceBound& a, const DistanceBound& b) { return b.distance > a.distance ? b : a; }
 
@@ -77,6 +73,7 @@ SceneDistance::SceneDistance(const Scene& scene) {
     reach_ = {{infinity, infinity, infinity}, {-infinity, -infinity, -infinity}};
     std::unordered_map<const SceneNode*, int> tape_of;
     for (const SceneNodePtr& node : scene.nodes) roots_.push_back(add(*node, Mat4::identity(), tape_of));
+    for (const int root : roots_) root_boxes_.push_back(box_of(root));
 }
 
 int SceneDistance::add(const SceneNode& scene_node, const Mat4& to_scene,
@@ -92,7 +89,7 @@ int SceneDistance::add(const SceneNode& scene_node, const Mat4& to_scene,
         if (fresh) tapes_.push_back(std::make_unique<Tape>(surface_of(object)));
         node.tape = it->second;
         const Box3 box = object.bounds.enclosing_box();
-        if (is_finite_box(box)) reach_ = unite(reach_, here.transform_box(box));
+        if (is_bounded(box)) reach_ = unite(reach_, here.transform_box(box));
     }
     const int index = static_cast<int>(nodes_.size());
     nodes_.push_back(std::move(node));
@@ -101,6 +98,19 @@ int SceneDistance::add(const SceneNode& scene_node, const Mat4& to_scene,
         nodes_[static_cast<std::size_t>(index)].children.push_back(c);
     }
     return index;
+}
+
+Box3 SceneDistance::box_of(int index) const {
+    const Node& node = nodes_[static_cast<std::size_t>(index)];
+    if (node.kind == SceneNode::Kind::Object) return node.to_scene.transform_box(node.bounds.enclosing_box());
+    if (node.children.empty()) return {{infinity, infinity, infinity}, {-infinity, -infinity, -infinity}};
+    Box3 box = box_of(node.children.front());
+    if (node.kind == SceneNode::Kind::Difference) return box;  // within the first child
+    for (std::size_t i = 1; i < node.children.size(); ++i) {
+        const Box3 child = box_of(node.children[i]);
+        box = node.kind == SceneNode::Kind::Group ? unite(box, child) : intersect(box, child);
+    }
+    return box;
 }
 
 DistanceProbe::DistanceProbe(const SceneDistance& scene) : scene_(&scene) {
@@ -114,6 +124,13 @@ DistanceProbe::DistanceProbe(const SceneDistance& scene) : scene_(&scene) {
 DistanceBound DistanceProbe::outside_at(const Vec3d& p, double reach) {
     DistanceBound best{reach, -1, false, false};
     for (const int root : scene_->roots_) best = smaller(best, node_at(root, p, best.distance, true).outside);
+    return best;
+}
+
+DistanceBound DistanceProbe::outside_at(const Vec3d& p, double reach, std::span<const int> roots) {
+    DistanceBound best{reach, -1, false, false};
+    for (const int root : roots)
+        best = smaller(best, node_at(scene_->roots_[static_cast<std::size_t>(root)], p, best.distance, true).outside);
     return best;
 }
 

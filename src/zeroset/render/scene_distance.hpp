@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -39,6 +40,9 @@ public:
     /// tracing marches only inside it (unbounded ones, such as planes,
     /// count where it reaches).
     [[nodiscard]] const Box3& reach() const { return reach_; }
+    /// A box holding each top-level node's solid, in the scene's space
+    /// (infinite where it is unbounded), in the order of the scene's nodes.
+    [[nodiscard]] const std::vector<Box3>& root_boxes() const { return root_boxes_; }
 
 private:
     friend class DistanceProbe;
@@ -56,9 +60,12 @@ private:
 
     /// Appends the node and those below it; returns its index.
     int add(const SceneNode& node, const Mat4& to_scene, std::unordered_map<const SceneNode*, int>& tape_of);
+    /// A box holding the node's solid, in the scene's space.
+    [[nodiscard]] Box3 box_of(int node) const;
 
     std::vector<Node> nodes_;
     std::vector<int> roots_;
+    std::vector<Box3> root_boxes_;
     std::vector<std::unique_ptr<Tape>> tapes_;  // one for each distinct object
     Box3 reach_;
 };
@@ -78,6 +85,8 @@ public:
     /// A lower bound of the distance from p to the scene's solids — and
     /// `reach` when none is within reach; 0 inside one.
     DistanceBound outside_at(const Vec3d& p, double reach);
+    /// The same over some of the top-level nodes only (indices into the scene's nodes).
+    DistanceBound outside_at(const Vec3d& p, double reach, std::span<const int> roots);
     /// A lower bound of the distance from p to the space outside every
     /// solid (capped at `reach`); 0 outside them all.
     DistanceBound inside_at(const Vec3d& p, double reach);
