@@ -22,29 +22,57 @@ ConeTracer::ConeTracer(const SceneDistance& distance, double footprint)
     least_step_ = 1e-6 * (reach.valid() ? std::max(reach.diagonal(), 1e-300) : 1.0);
 }
 
-void ConeTracer::find_windows(const Ray& ray, const Span& span) {
-    windows_.clear();
+void ConeTracer::grow_boxes(const Vec3d& eye) {
+    grown_for_ = eye;
+    grown_.clear();
+    bounded_.clear();
+    unbounded_.clear();
+    std::vector<Box3> bounded_boxes;
     const std::vector<Box3>& boxes = distance_->root_boxes();
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         const Box3& box = boxes[i];
+        grown_.push_back(box);
         if (!box.valid()) continue;
+        if (!is_bounded(box)) {
+            unbounded_.push_back(static_cast<int>(i));
+            continue;
+        }
         // Grown by the cone's widest radius over the box: the distance from
         // the eye to its farthest corner bounds t in it.
-        Box3 grown = box;
-        if (is_bounded(box)) {
-            double farthest = 0.0;
-            for (int corner = 0; corner < 8; ++corner) {
-                const Vec3d c{corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y,
-                              corner & 4 ? box.hi.z : box.lo.z};
-                farthest = std::max(farthest, length(c - ray.origin));
-            }
-            const double margin = footprint_ * farthest * 1.01 + least_step_;
-            grown = {box.lo - Vec3d{margin, margin, margin}, box.hi + Vec3d{margin, margin, margin}};
+        double farthest = 0.0;
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3d c{corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y,
+                          corner & 4 ? box.hi.z : box.lo.z};
+            farthest = std::max(farthest, length(c - eye));
         }
-        if (const std::optional<Span> in = grown.clip(ray, span.t0, span.t1))
-            windows_.push_back({*in, static_cast<int>(i)});
+        const double margin = footprint_ * farthest * 1.01 + least_step_;
+        grown_.back() = {box.lo - Vec3d{margin, margin, margin}, box.hi + Vec3d{margin, margin, margin}};
+        bounded_.push_back(static_cast<int>(i));
+        bounded_boxes.push_back(grown_.back());
     }
+    bvh_.emplace(bounded_boxes, 1);
+}
+
+void ConeTracer::find_windows(const Ray& ray, const Span& span) {
+    if (!bvh_ || !(grown_for_ == ray.origin)) grow_boxes(ray.origin);
+    windows_.clear();
+    const auto add = [&](int root) {
+        if (const std::optional<Span> in = grown_[static_cast<std::size_t>(root)].clip(ray, span.t0, span.t1))
+            windows_.push_back({*in, root});
+    };
+    for (const int root : unbounded_) add(root);
+    if (!bvh_->empty())
+        bvh_->traverse(ray, span.t0, span.t1, [&](std::uint32_t i, double t_max) {
+            add(bounded_[i]);
+            return t_max;
+        });
     std::sort(windows_.begin(), windows_.end(), [](const Window& a, const Window& b) { return a.span.t0 < b.span.t0; });
+}
+
+void ConeTracer::candidates_at(double t) {
+    candidates_.clear();
+    for (const Window& w : windows_)
+        if (w.span.t0 <= t && t <= w.span.t1) candidates_.push_back(w.root);
 }
 
 int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeCounters& counters) {
@@ -63,18 +91,17 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
     };
     double t = span->t0, window = span->t1 - span->t0;
     int steps = 0;
+    std::size_t next_window = 0;  // windows_ before it have begun
+    open_.clear();
     for (; t < span->t1 && steps < max_steps && found < max_edges - 1; ++steps) {
         // Only the top-level nodes whose grown boxes the ray is in can come
         // within the cone; with none, the march jumps to the next one's box.
+        for (; next_window < windows_.size() && windows_[next_window].span.t0 <= t; ++next_window)
+            open_.push_back(next_window);
+        std::erase_if(open_, [&](std::size_t w) { return windows_[w].span.t1 < t; });
         active_.clear();
-        double next_start = span->t1;
-        for (const Window& w : windows_) {
-            if (w.span.t0 > t) {
-                next_start = std::min(next_start, w.span.t0);
-                break;  // sorted by start
-            }
-            if (w.span.t1 >= t) active_.push_back(w.root);
-        }
+        for (const std::size_t w : open_) active_.push_back(windows_[w].root);
+        const double next_start = next_window < windows_.size() ? windows_[next_window].span.t0 : span->t1;
         if (active_.empty()) {
             close_stretch();
             t = next_start;
@@ -110,6 +137,11 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
 std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, double t_hit, ConeCounters& counters) {
     const std::uint64_t evaluations_before = probe_.evaluations();
     Edge deepest{t_hit, 0.0, footprint_ * t_hit, t_hit, {}};
+    const Box3& reach = distance_->reach();
+    const std::optional<Span> rest = reach.clip(ray, t_hit, std::numeric_limits<double>::infinity());
+    find_windows(ray, rest.value_or(Span{t_hit, t_hit}));
+    candidates_.clear();
+    for (const Window& w : windows_) candidates_.push_back(w.root);
     double t = t_hit, depth = 0.0;
     int steps = 0;
     bool covered = false;
@@ -117,13 +149,13 @@ std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, doub
         t += std::max({depth, 0.5 * footprint_ * t, least_step_});
         const double radius = footprint_ * t;
         const Vec3d p = ray.at(t);
-        const DistanceBound inside = probe_.inside_at(p, 2.0 * radius);
+        const DistanceBound inside = probe_.inside_at(p, 2.0 * radius, candidates_);
         depth = inside.distance;
         if (depth >= radius) {
             covered = true;  // the solid fills the cone here: no silhouette is near
             break;
         }
-        if (depth == 0.0 && probe_.outside_at(p, radius).distance > 0.0) break;  // out of the solid again
+        if (depth == 0.0 && probe_.outside_at(p, radius, candidates_).distance > 0.0) break;  // out of the solid again
         if (depth / radius > deepest.ratio) deepest = {t, depth / radius, radius, t, inside};
     }
     counters.steps += static_cast<std::uint64_t>(steps);
@@ -147,8 +179,8 @@ std::optional<Vec3d> ConeTracer::across_edge(const Ray& ray, const Edge& edge) {
     const double h = 0.5 * edge.radius;
     const bool inner = edge.bound.complement;
     const auto bound = [&](const Vec3d& q) {
-        return inner ? probe_.inside_at(q, 2.0 * edge.radius).distance
-                     : probe_.outside_at(q, 2.0 * edge.radius).distance;
+        return inner ? probe_.inside_at(q, 2.0 * edge.radius, candidates_).distance
+                     : probe_.outside_at(q, 2.0 * edge.radius, candidates_).distance;
     };
     // Down the bound across the disk — the distance to the solid (outer
     // edges) or the depth in it (inner ones) — whatever the surface's shape — a crease or a
@@ -222,6 +254,7 @@ Vec3d ConeTracer::pixel(SceneTracer& tracer, const Ray& ray, const std::optional
     Vec3d color{};
     double covered = 0.0;
     for (int i = 0; i < found; ++i) {
+        candidates_at(edges_[static_cast<std::size_t>(i)].t);
         const auto sample = resolved(edges_[static_cast<std::size_t>(i)]);
         if (!sample) continue;
         const double alpha = (1.0 - covered) * sample->coverage;

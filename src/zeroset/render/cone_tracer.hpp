@@ -34,6 +34,7 @@
 #include <optional>
 #include <vector>
 
+#include "zeroset/accel/bvh.hpp"
 #include "zeroset/render/scene_distance.hpp"
 #include "zeroset/render/scene_tracer.hpp"
 #include "zeroset/render/shading.hpp"
@@ -89,6 +90,11 @@ private:
     /// Where along the ray each top-level node can come within the cone:
     /// its box grown by the cone's radius, clipped to span; sorted by start.
     void find_windows(const Ray& ray, const Span& span);
+    /// The top-level nodes' boxes grown for cones from `eye`, and a BVH over
+    /// them (all camera rays share the eye, so this is done once).
+    void grow_boxes(const Vec3d& eye);
+    /// candidates_: the roots whose windows hold t.
+    void candidates_at(double t);
     /// The edges along the ray up to t_end, nearest first; returns how many.
     int find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeCounters& counters);
     /// Where the chord of the ray through the solid it hits at t_hit lies
@@ -114,8 +120,14 @@ private:
         Span span;
         int root;
     };
+    std::vector<Box3> grown_;  // by top-level node, for cones from grown_for_
+    Vec3d grown_for_{};
+    std::vector<int> bounded_, unbounded_;  // the roots with bounded grown boxes (the BVH's, in its order) and the rest
+    std::optional<Bvh> bvh_;
+    std::vector<int> candidates_;  // the roots an edge's distance bounds look at
     std::vector<Window> windows_;
-    std::vector<int> active_;  // the roots whose windows hold the march's t
+    std::vector<std::size_t> open_;  // the windows begun and not yet ended, in windows_
+    std::vector<int> active_;        // their roots
 };
 
 }  // namespace zeroset

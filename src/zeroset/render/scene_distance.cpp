@@ -73,7 +73,10 @@ SceneDistance::SceneDistance(const Scene& scene) {
     reach_ = {{infinity, infinity, infinity}, {-infinity, -infinity, -infinity}};
     std::unordered_map<const SceneNode*, int> tape_of;
     for (const SceneNodePtr& node : scene.nodes) roots_.push_back(add(*node, Mat4::identity(), tape_of));
-    for (const int root : roots_) root_boxes_.push_back(box_of(root));
+    for (const int root : roots_) {
+        all_roots_.push_back(static_cast<int>(root_boxes_.size()));
+        root_boxes_.push_back(box_of(root));
+    }
 }
 
 int SceneDistance::add(const SceneNode& scene_node, const Mat4& to_scene,
@@ -121,22 +124,28 @@ DistanceProbe::DistanceProbe(const SceneDistance& scene) : scene_(&scene) {
     }
 }
 
-DistanceBound DistanceProbe::outside_at(const Vec3d& p, double reach) {
-    DistanceBound best{reach, -1, false, false};
-    for (const int root : scene_->roots_) best = smaller(best, node_at(root, p, best.distance, true).outside);
-    return best;
-}
+DistanceBound DistanceProbe::outside_at(const Vec3d& p, double reach) { return outside_at(p, reach, scene_->all_roots_); }
+
+DistanceBound DistanceProbe::inside_at(const Vec3d& p, double reach) { return inside_at(p, reach, scene_->all_roots_); }
 
 DistanceBound DistanceProbe::outside_at(const Vec3d& p, double reach, std::span<const int> roots) {
     DistanceBound best{reach, -1, false, false};
-    for (const int root : roots)
-        best = smaller(best, node_at(scene_->roots_[static_cast<std::size_t>(root)], p, best.distance, true).outside);
+    for (const int root : roots) {
+        const auto i = static_cast<std::size_t>(root);
+        // A box no nearer than the nearest so far holds nothing nearer.
+        if (distance_to_bounds(p, Bounds::make_box(scene_->root_boxes_[i])) >= best.distance) continue;
+        best = smaller(best, node_at(scene_->roots_[i], p, best.distance, true).outside);
+    }
     return best;
 }
 
-DistanceBound DistanceProbe::inside_at(const Vec3d& p, double reach) {
+DistanceBound DistanceProbe::inside_at(const Vec3d& p, double reach, std::span<const int> roots) {
     DistanceBound deepest{0.0, -1, true, false};
-    for (const int root : scene_->roots_) deepest = larger(deepest, node_at(root, p, reach, false).inside);
+    for (const int root : roots) {
+        const auto i = static_cast<std::size_t>(root);
+        if (scene_->root_boxes_[i].contains(p))  // only a solid's box holds points inside it
+            deepest = larger(deepest, node_at(scene_->roots_[i], p, reach, false).inside);
+    }
     return deepest;
 }
 

@@ -66,6 +66,7 @@ private:
     std::vector<Node> nodes_;
     std::vector<int> roots_;
     std::vector<Box3> root_boxes_;
+    std::vector<int> all_roots_;  // 0, 1, … : every top-level node
     std::vector<std::unique_ptr<Tape>> tapes_;  // one for each distinct object
     Box3 reach_;
 };
@@ -85,11 +86,13 @@ public:
     /// A lower bound of the distance from p to the scene's solids — and
     /// `reach` when none is within reach; 0 inside one.
     DistanceBound outside_at(const Vec3d& p, double reach);
-    /// The same over some of the top-level nodes only (indices into the scene's nodes).
+    /// The same over some of the top-level nodes only (indices into the
+    /// scene's nodes): those whose boxes may hold what is near p.
     DistanceBound outside_at(const Vec3d& p, double reach, std::span<const int> roots);
     /// A lower bound of the distance from p to the space outside every
     /// solid (capped at `reach`); 0 outside them all.
     DistanceBound inside_at(const Vec3d& p, double reach);
+    DistanceBound inside_at(const Vec3d& p, double reach, std::span<const int> roots);
     /// The unit direction, in the scene's space, in which the bound's leaf
     /// surface is nearest to first order: down its gradient, or up it for a
     /// complement — or towards the nearest point or face of its bounds, when
