@@ -35,10 +35,10 @@ Options:
 )" + image_output_help("the scene file's name with .png, in the current\n                      directory (zeroset.png for the built-in scene)") + R"(  --width W           image width in pixels (default: the scene's, else 640)
   --height H          image height in pixels (default: the scene's, else 480)
   --spp N             samples per pixel, stratified (default: the scene's, else 1)
-  --antialias A       how edges are antialiased: samples (by --spp alone, the
-                      default) or cone (one ray per pixel widened to the cone
-                      of its footprint, Hart 1993; needs --spp 1; see
-                      docs/antialiasing.md)
+  --antialias A       how edges are antialiased: samples (by --spp alone) or
+                      cone (one ray per pixel widened to the cone of its
+                      footprint, Hart 1993; needs --spp 1; see
+                      docs/antialiasing.md); default: the scene's, else samples
   --threads N         render threads (default: all cores)
   --method M          intersect every object with method M instead of its own:
                       auto, sphere, interval, lg, polynomial, newton,
@@ -78,6 +78,7 @@ RenderSettings settings_for(const Options& options, const Scene& scene, bool lay
     settings.height = options.integer("--height").value_or(scene.image.height);
     settings.samples_per_pixel = options.integer("--spp").value_or(scene.image.samples_per_pixel);
     settings.threads = options.integer("--threads").value_or(0);
+    settings.cone_antialiasing = scene.image.cone_antialiasing;
     if (const auto antialias = options.value("--antialias")) {
         if (*antialias != "samples" && *antialias != "cone")
             throw UsageError("unknown antialiasing '" + *antialias + "' (known: samples, cone)");

@@ -48,13 +48,20 @@ py::array_t<float> plane_array(const std::vector<float>& values, int width, int 
 }
 
 py::object render_scene(const Scene& scene, std::optional<int> width, std::optional<int> height,
-                        std::optional<int> spp, int threads, const std::optional<std::string>& method, bool layers) {
+                        std::optional<int> spp, int threads, const std::optional<std::string>& method, bool layers,
+                        const std::optional<std::string>& antialias) {
     RenderSettings settings;
     settings.width = width.value_or(scene.image.width);
     settings.height = height.value_or(scene.image.height);
     settings.samples_per_pixel = spp.value_or(scene.image.samples_per_pixel);
     settings.threads = threads;
     settings.layers = layers;
+    settings.cone_antialiasing = scene.image.cone_antialiasing;
+    if (antialias) {
+        if (*antialias != "samples" && *antialias != "cone")
+            throw py::value_error("unknown antialiasing '" + *antialias + "' (known: samples, cone)");
+        settings.cone_antialiasing = *antialias == "cone";
+    }
     if (method) settings.method = named(*method, "method", all_methods(), method_name);
     // A copy (shallow: the nodes are shared and immutable), since another
     // Python thread may change the scene while this one renders.
@@ -147,9 +154,10 @@ Image image_from(const py::array_t<float, py::array::c_style | py::array::forcec
 void bind_images(py::module_& m) {
     m.def("render", &render_scene, py::arg("scene"), py::arg("width") = py::none(), py::arg("height") = py::none(),
           py::arg("spp") = py::none(), py::arg("threads") = 0, py::arg("method") = py::none(),
-          py::arg("layers") = false,
-          "Renders the scene: linear RGB float32, shape (height, width, 3). Size and samples default to the "
-          "scene's; threads=0 uses every core; method overrides every object's. With layers=True, returns "
+          py::arg("layers") = false, py::arg("antialias") = py::none(),
+          "Renders the scene: linear RGB float32, shape (height, width, 3). Size, samples and antialias "
+          "('samples' or 'cone', docs/antialiasing.md) default to the scene's; threads=0 uses every core; method "
+          "overrides every object's. With layers=True, returns "
           "(rgb, depth, normals): depth (height, width) is the distance to the nearest hit along the pixel's ray "
           "(inf where none), normals (height, width, 3) the unit normal there (0 where none).");
     m.def("slice", &slice_expression, py::arg("f"), py::arg("size") = 512, py::arg("axis") = "z",

@@ -25,6 +25,19 @@ def test_render_gives_the_programs_image(binary, tmp_path):
     np.testing.assert_array_equal(rgb, read_pfm(out))
 
 
+def test_cone_antialiasing_gives_the_programs_image(binary, tmp_path):
+    rgb = zs.render(zs.default_scene(), 64, 48, threads=2, antialias="cone")
+    out = tmp_path / "out.pfm"
+    subprocess.run([binary, "render", "-q", "-o", str(out), "--width", "64", "--height", "48", "--antialias", "cone"],
+                   check=True)
+    np.testing.assert_array_equal(rgb, read_pfm(out))
+    assert not np.array_equal(rgb, zs.render(zs.default_scene(), 64, 48, threads=2))  # its edges are blended
+    with pytest.raises(ValueError, match="unknown antialiasing 'cones'"):
+        zs.render(zs.default_scene(), 8, 8, antialias="cones")
+    with pytest.raises(zs.RenderError, match="cone antialiasing traces one ray per pixel"):
+        zs.render(zs.default_scene(), 8, 8, spp=4, antialias="cone")
+
+
 def test_layers_are_depth_and_normals_of_the_hits():
     scene = zs.default_scene()
     rgb, depth, normals = zs.render(scene, 80, 60, threads=2, layers=True)

@@ -45,6 +45,14 @@ TEST(ImageBlock, ReflectionDepthIsAWholeNumberFromZero) {
     EXPECT_EQ(error_of("image { reflection_depth 65 }"), "scene.zs:1:26: reflection_depth must be at most 64, but it is 65");
 }
 
+TEST(ImageBlock, AntialiasIsSamplesOrCone) {
+    EXPECT_FALSE(parse("").image.cone_antialiasing);
+    EXPECT_TRUE(parse("image { antialias cone }").image.cone_antialiasing);
+    EXPECT_FALSE(parse("image { antialias samples }").image.cone_antialiasing);
+    EXPECT_NE(error_of("image { antialias cones }").find("scene.zs:1:19:"), std::string::npos)
+        << error_of("image { antialias cones }");
+}
+
 TEST(Clock, ReadsTheValueTheSceneIsLoadedWith) {
     const std::string text = "let r = 1 + clock\nobject { surface x^2 + y^2 + z^2 - r^2 }\n";
     const auto f_at = [&](double clock, double px) {

@@ -134,7 +134,8 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
     return found;
 }
 
-std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, double t_hit, ConeCounters& counters) {
+std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, double t_hit, const Vec3d& normal,
+                                                           ConeCounters& counters) {
     const std::uint64_t evaluations_before = probe_.evaluations();
     Edge deepest{t_hit, 0.0, footprint_ * t_hit, t_hit, {}};
     const Box3& reach = distance_->reach();
@@ -142,8 +143,17 @@ std::optional<ConeTracer::Edge> ConeTracer::find_inner_edge(const Ray& ray, doub
     find_windows(ray, rest.value_or(Span{t_hit, t_hit}));
     candidates_.clear();
     for (const Window& w : windows_) candidates_.push_back(w.root);
+    int steps = 1;
+    // Most hits are far from a silhouette: a first look as deep as the cone
+    // is wide, past the hit across the surface's tangent plane, settles them.
+    const double across = std::max(std::abs(dot(normal, ray.dir)), 0.1);
+    const double t_look = t_hit + 1.5 * footprint_ * t_hit / across, radius_there = footprint_ * t_look;
+    if (probe_.inside_at(ray.at(t_look), 2.0 * radius_there, candidates_).distance >= radius_there) {
+        counters.steps += 1;
+        counters.evaluations += probe_.evaluations() - evaluations_before;
+        return std::nullopt;
+    }
     double t = t_hit, depth = 0.0;
-    int steps = 0;
     bool covered = false;
     for (; steps < max_steps; ++steps) {
         t += std::max({depth, 0.5 * footprint_ * t, least_step_});
@@ -246,7 +256,7 @@ Vec3d ConeTracer::pixel(SceneTracer& tracer, const Ray& ray, const std::optional
     Vec3d own = ray_color;
     if (hit) {
         // The ray's own surface, near its silhouette, leaves part of the cone to what lies behind.
-        if (const std::optional<Edge> inner = find_inner_edge(ray, hit->t, counters))
+        if (const std::optional<Edge> inner = find_inner_edge(ray, hit->t, hit->normal, counters))
             if (const auto behind = resolved(*inner)) own = ray_color * (1.0 - behind->coverage) + behind->color * behind->coverage;
     }
     const double t_end = hit ? hit->t : std::numeric_limits<double>::infinity();

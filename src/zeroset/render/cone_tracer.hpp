@@ -97,10 +97,10 @@ private:
     void candidates_at(double t);
     /// The edges along the ray up to t_end, nearest first; returns how many.
     int find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeCounters& counters);
-    /// Where the chord of the ray through the solid it hits at t_hit lies
-    /// least deep, when that is less than the cone's radius: the cone there
-    /// reaches past the solid's silhouette.
-    std::optional<Edge> find_inner_edge(const Ray& ray, double t_hit, ConeCounters& counters);
+    /// Where the chord of the ray through the solid it hits at t_hit (with
+    /// that normal) lies least deep, when that is less than the cone's
+    /// radius: the cone there reaches past the solid's silhouette.
+    std::optional<Edge> find_inner_edge(const Ray& ray, double t_hit, const Vec3d& normal, ConeCounters& counters);
     /// The unit direction across the cone (perpendicular to the ray) in
     /// which the edge's surface lies (an outer edge) or ends (an inner one):
     /// down the distance bound's differences across the disk.

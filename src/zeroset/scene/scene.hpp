@@ -110,6 +110,9 @@ struct ImageSettings {
     int width = 640;
     int height = 480;
     int samples_per_pixel = 1;
+    /// Antialias by cone tracing one ray a pixel (render/cone_tracer.hpp)
+    /// rather than by samples alone.
+    bool cone_antialiasing = false;
     /// How many mirror bounces a camera ray may take (0 to max_reflection_depth);
     /// a ray past them sees black.
     int reflection_depth = 5;

@@ -18,7 +18,8 @@ namespace {
 constexpr std::array<std::string_view, 16> statement_names{
     "image", "camera", "light",        "background", "ambient",  "let",   "include", "object", "blob",
     "group", "union",  "intersection", "difference", "instance", "shape", "for"};
-constexpr std::array<std::string_view, 4> image_keys{"width", "height", "spp", "reflection_depth"};
+constexpr std::array<std::string_view, 5> image_keys{"width", "height", "spp", "antialias", "reflection_depth"};
+constexpr std::array<std::string_view, 2> antialiasing_names{"samples", "cone"};
 constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};
 constexpr std::array<std::string_view, 4> light_keys{"from", "direction", "color", "shadows"};
 constexpr std::array<std::string_view, 6> material_keys{"color", "ambient", "diffuse", "specular", "shininess", "reflection"};
@@ -109,6 +110,8 @@ void SceneParser::image(const Token& keyword) {
             image.height = count("height", max_image_size);
         } else if (key.text == "spp") {
             image.samples_per_pixel = count("spp", max_samples_per_pixel);
+        } else if (key.text == "antialias") {
+            image.cone_antialiasing = choice("antialiasing", antialiasing_names).text == "cone";
         } else {
             image.reflection_depth = count("reflection_depth", max_reflection_depth, 0);
         }
