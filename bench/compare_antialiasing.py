@@ -11,9 +11,12 @@ channel difference.
 
   python3 bench/compare_antialiasing.py [SCENE.zs ...] [--size 640x360]
       [--runs 3] [--threads N] [--crop X,Y,W,H,ZOOM --crop-out FILE.png]
+      [--columns NAME:X0-X1,...]
 
 --crop writes the same crop of the one-ray, cone and 16-sample images side
-by side, enlarged ZOOM times, as a PNG (for the docs). Needs ./build/zeroset
+by side, enlarged ZOOM times, as a PNG (for the docs). --columns also gives
+the mean difference on the edge pixels of each band of columns [X0, X1) of
+the first scene, one object's in silhouettes.zs, say. Needs ./build/zeroset
 and numpy.
 """
 import argparse
@@ -90,6 +93,7 @@ def main():
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--crop")
     parser.add_argument("--crop-out")
+    parser.add_argument("--columns")
     args = parser.parse_args()
 
     print("| scene | image | trace time | mean difference | on edges | 99.9th percentile |")
@@ -111,6 +115,16 @@ def main():
                 print(f"| {label} | {name} | {seconds:.3f} s | {mean:.3f} | {on_edges:.2f} | {high:.0f} |")
                 label = ""
             print(f"| | ({edges.sum()} edge pixels) | | | | |")
+            if args.columns:
+                for band in args.columns.split(","):
+                    name, columns = band.split(":")
+                    x0, x1 = (int(v) for v in columns.split("-"))
+                    inside = np.zeros_like(edges)
+                    inside[:, x0:x1] = True
+                    on_band = edges & inside
+                    line = ", ".join(f"{n} {differences(images[n][0], reference, on_band)[1]:.2f}" for n in images)
+                    print(f"| | {name}: {on_band.sum()} edge pixels: {line} | | | | |")
+                args.columns = None  # the first scene's only
             if args.crop and args.crop_out:
                 x, y, w, h, zoom = (int(v) for v in args.crop.split(","))
                 tiles = [np.repeat(np.repeat(images[n][0][y:y + h, x:x + w], zoom, 0), zoom, 1)
