@@ -24,8 +24,6 @@ struct Item {
     std::uint32_t index;
 };
 
-Box3 empty_box() { return {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}}; }
-Box3 unite(const Box3& a, const Box3& b) { return {min(a.lo, b.lo), max(a.hi, b.hi)}; }
 /// The float nearest below (above) a double: boxes stored in floats still contain what they bound.
 float round_down(double v) {
     const auto f = static_cast<float>(v);
@@ -63,7 +61,7 @@ Split best_split(std::span<const Item> items, const Box3& centroids) {
         };
         for (const Item& item : items) {
             const int b = bin_of(item);
-            bin_box[b] = unite(bin_box[b], item.box);
+            bin_box[b] = united(bin_box[b], item.box);
             ++bin_items[b];
         }
         // Sweep from the right for the right-hand sides' areas, then from the left.
@@ -71,14 +69,14 @@ Split best_split(std::span<const Item> items, const Box3& centroids) {
         Box3 right = empty_box();
         std::size_t right_count = 0;
         for (int b = bin_count - 1; b > 0; --b) {
-            right = unite(right, bin_box[b]);
+            right = united(right, bin_box[b]);
             right_count += bin_items[b];
             right_cost[b] = half_area(right) * static_cast<double>(right_count);
         }
         Box3 left = empty_box();
         std::size_t left_count = 0;
         for (int b = 0; b < bin_count - 1; ++b) {
-            left = unite(left, bin_box[b]);
+            left = united(left, bin_box[b]);
             left_count += bin_items[b];
             if (left_count == 0 || left_count == items.size()) continue;
             const double cost = half_area(left) * static_cast<double>(left_count) + right_cost[b + 1];
@@ -102,8 +100,8 @@ std::unique_ptr<Bvh::BuildNode> build(std::span<Item> items, std::size_t offset,
     auto node = std::make_unique<Bvh::BuildNode>();
     Box3 box = empty_box(), centroids = empty_box();
     for (const Item& item : items) {
-        box = unite(box, item.box);
-        centroids = unite(centroids, {item.centroid, item.centroid});
+        box = united(box, item.box);
+        centroids = united(centroids, {item.centroid, item.centroid});
     }
     node->box = box;
     const auto make_leaf = [&] {

@@ -15,7 +15,7 @@ CsgNode::CsgNode(Operation operation, std::vector<std::shared_ptr<const Primitiv
     if (operation_ == Operation::Intersection) {
         for (const auto& child : children_) {
             const Box3 b = child->bounds();
-            box_ = {max(box_.lo, b.lo), min(box_.hi, b.hi)};
+            box_ = overlap(box_, b);
         }
         if (!box_.valid()) box_ = {{0, 0, 0}, {0, 0, 0}};  // the children's boxes do not meet: empty
     }

@@ -29,11 +29,8 @@ Group::Group(std::vector<std::shared_ptr<const Primitive>> children, int threads
       bounded_(static_cast<std::size_t>(
           std::count_if(children_.begin(), children_.end(), [](const auto& c) { return is_bounded(c->bounds()); }))),
       bvh_(boxes_of(children_, bounded_), threads) {
-    box_ = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
-    for (const auto& child : children_) {
-        const Box3 b = child->bounds();
-        box_ = {min(box_.lo, b.lo), max(box_.hi, b.hi)};
-    }
+    box_ = empty_box();
+    for (const auto& child : children_) box_ = united(box_, child->bounds());
 }
 
 std::optional<Hit> Group::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {

@@ -52,4 +52,14 @@ struct Box3 {
     }
 };
 
+/// The box holding nothing: the identity of united().
+constexpr Box3 empty_box() {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {{inf, inf, inf}, {-inf, -inf, -inf}};
+}
+/// The smallest box holding both.
+constexpr Box3 united(const Box3& a, const Box3& b) { return {min(a.lo, b.lo), max(a.hi, b.hi)}; }
+/// The part both hold (not valid() when they do not meet).
+constexpr Box3 overlap(const Box3& a, const Box3& b) { return {max(a.lo, b.lo), min(a.hi, b.hi)}; }
+
 }  // namespace zeroset

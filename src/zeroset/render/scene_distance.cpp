@@ -54,23 +54,13 @@ double depth_in_bounds(const Vec3d& p, const Bounds& bounds) {
     return std::max(depth, 0.0);
 }
 
-Box3 intersect(const Box3& a, const Box3& b) {
-    return {{std::max(a.lo.x, b.lo.x), std::max(a.lo.y, b.lo.y), std::max(a.lo.z, b.lo.z)},
-            {std::min(a.hi.x, b.hi.x), std::min(a.hi.y, b.hi.y), std::min(a.hi.z, b.hi.z)}};
-}
-
-Box3 unite(const Box3& a, const Box3& b) {
-    return {{std::min(a.lo.x, b.lo.x), std::min(a.lo.y, b.lo.y), std::min(a.lo.z, b.lo.z)},
-            {std::max(a.hi.x, b.hi.x), std::max(a.hi.y, b.hi.y), std::max(a.hi.z, b.hi.z)}};
-}
-
 const DistanceBound& smaller(const DistanceBound& a, const DistanceBound& b) { return b.distance < a.distance ? b : a; }
 const DistanceBound& larger(const DistanceBound& a, const DistanceBound& b) { return b.distance > a.distance ? b : a; }
 
 }  // namespace
 
 SceneDistance::SceneDistance(const Scene& scene) {
-    reach_ = {{infinity, infinity, infinity}, {-infinity, -infinity, -infinity}};
+    reach_ = empty_box();
     std::unordered_map<const SceneNode*, int> tape_of;
     for (const SceneNodePtr& node : scene.nodes) roots_.push_back(add(*node, Mat4::identity(), tape_of));
     for (const int root : roots_) {
@@ -92,7 +82,7 @@ int SceneDistance::add(const SceneNode& scene_node, const Mat4& to_scene,
         if (fresh) tapes_.push_back(std::make_unique<Tape>(surface_of(object)));
         node.tape = it->second;
         const Box3 box = object.bounds.enclosing_box();
-        if (is_bounded(box)) reach_ = unite(reach_, here.transform_box(box));
+        if (is_bounded(box)) reach_ = united(reach_, here.transform_box(box));
     }
     const int index = static_cast<int>(nodes_.size());
     nodes_.push_back(std::move(node));
@@ -106,12 +96,12 @@ int SceneDistance::add(const SceneNode& scene_node, const Mat4& to_scene,
 Box3 SceneDistance::box_of(int index) const {
     const Node& node = nodes_[static_cast<std::size_t>(index)];
     if (node.kind == SceneNode::Kind::Object) return node.to_scene.transform_box(node.bounds.enclosing_box());
-    if (node.children.empty()) return {{infinity, infinity, infinity}, {-infinity, -infinity, -infinity}};
+    if (node.children.empty()) return empty_box();
     Box3 box = box_of(node.children.front());
     if (node.kind == SceneNode::Kind::Difference) return box;  // within the first child
     for (std::size_t i = 1; i < node.children.size(); ++i) {
         const Box3 child = box_of(node.children[i]);
-        box = node.kind == SceneNode::Kind::Group ? unite(box, child) : intersect(box, child);
+        box = node.kind == SceneNode::Kind::Group ? united(box, child) : overlap(box, child);
     }
     return box;
 }
@@ -189,7 +179,7 @@ DistanceProbe::Pair DistanceProbe::leaf_at(int index, const Vec3d& p, double rea
     ++evaluations_;
     if (std::isnan(f)) return {{0.0, -1, false, false}, {0.0, -1, true, false}};  // nothing is known here
     const Vec3d r{local_reach, local_reach, local_reach};
-    const Box3 near = intersect({q - r, q + r}, node.bounds.enclosing_box());
+    const Box3 near = overlap({q - r, q + r}, node.bounds.enclosing_box());
     const double slope = lipschitz_bound(slopes_[tape], near).constant;
     ++evaluations_;
     const double clear = slope > 0.0 ? std::min(std::abs(f) / slope, local_reach) : local_reach;
