@@ -214,6 +214,12 @@ TEST_F(Cli, ConeAntialiasingOptionIsCheckedBeforeRendering) {
     EXPECT_NE(both.status, 0);
     EXPECT_NE(both.err.find("cone antialiasing traces one ray per pixel"), std::string::npos) << both.err;
     EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+    const Outcome blob = run("render '" ZEROSET_SOURCE_DIR "/scenes/blobs/molecule_1000.zs' -o out.png --width 8 "
+                             "--height 8 --antialias cone");
+    EXPECT_NE(blob.status, 0);
+    EXPECT_NE(blob.err.find("object 'molecule' has 1000 blob components: cone antialiasing"), std::string::npos)
+        << blob.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
     const Outcome fine = run("render -o out.png --width 32 --height 24 --antialias cone");
     EXPECT_EQ(fine.status, 0) << fine.err;
     EXPECT_NE(fine.err.find("cone antialiasing:"), std::string::npos) << fine.err;

@@ -157,6 +157,29 @@ TEST(ConeAntialiasing, CsgSilhouettesAreBlendedButCreasesAreNot) {
     EXPECT_LT(e.smooth_changed, e.smooth / 200);
 }
 
+TEST(ConeAntialiasing, ScenesWithNothingToBlendRenderAsOneRaySeesThem) {
+    // Only an unbounded plane (the cone marches inside bounded objects'
+    // box), no objects at all, and a camera inside a ball.
+    Scene plane = base_scene();
+    plane.nodes.clear();
+    Object ground;
+    ground.surface = var_y() + 1.0;
+    ground.bounds = Bounds::none();
+    plane.nodes.push_back(make_object_node(ground));
+    Scene empty = base_scene();
+    empty.nodes.clear();
+    Scene inside = silhouettes_scene();
+    inside.camera.from = {-1.1, 0, 0};
+    inside.camera.at = {-1.1, 0, 1};
+    for (const Scene* scene : {&plane, &empty, &inside}) {
+        const Image one = render_with(*scene, 1, false), cone = render_with(*scene, 1, true);
+        double largest = 0.0;
+        for (int y = 0; y < one.height; ++y)
+            for (int x = 0; x < one.width; ++x) largest = std::max(largest, difference(one, cone, x, y));
+        EXPECT_EQ(largest, 0.0);
+    }
+}
+
 TEST(ConeAntialiasing, NeedsOneSamplePerPixel) {
     RenderSettings settings;
     settings.cone_antialiasing = true;

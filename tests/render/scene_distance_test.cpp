@@ -8,6 +8,7 @@
 #include <functional>
 #include <random>
 
+#include "zeroset/render/render_settings.hpp"
 #include "zeroset/render/scene_distance.hpp"
 
 namespace zeroset {
@@ -115,6 +116,71 @@ TEST(SceneDistance, TransformsAndBoundsThatCutAreHonoured) {
         return in_stretched || in_half;
     };
     EXPECT_GT(check_bound_is_clear(scene, inside, 2.0), 100);
+}
+
+TEST(SceneDistance, TightBoundsDoNotLengthenTheBoundOutsideThem) {
+    // Outside a tight box |∇f| grows past its bound in the box: the slope
+    // must be taken over the whole ball then.
+    Scene scene;
+    scene.nodes.push_back(object_node(ball({0, 0, 0}, 1), {{-1, -1, -1}, {1, 1, 1}}));
+    const SceneDistance distance(scene);
+    DistanceProbe probe(distance);
+    EXPECT_LE(probe.outside_at({3, 0, 0}, 4.0).distance, 2.0);
+    EXPECT_LE(probe.outside_at({5, 0, 0}, 10.0).distance, 4.0);
+    EXPECT_GT(check_bound_is_clear(scene, [](const Vec3d& p) { return in_ball(p, {0, 0, 0}, 1); }, 6.0), 100);
+}
+
+TEST(SceneDistance, DepthBoundStaysInsideTheSolid) {
+    // A difference, moved and stretched: no point outside it lies nearer
+    // to a point inside it than the depth bound says.
+    const Mat4 placed = Mat4::translate({0.3, 0, 0}) * Mat4::scale({1.5, 1, 1});
+    auto cut = combine(SceneNode::Kind::Difference, {object_node(ball({0, 0, 0}, 1.5), {{-1.5, -1.5, -1.5}, {1.5, 1.5, 1.5}}),
+                                                    object_node(ball({0.8, 0, 0}, 0.7), wide)});
+    auto placed_cut = std::make_shared<SceneNode>(*cut);
+    placed_cut->transform = placed;
+    Scene scene;
+    scene.nodes.push_back(placed_cut);
+    const Mat4 to_local = placed.inverse().value();
+    const auto inside = [&](const Vec3d& p) {
+        const Vec3d q = to_local.transform_point(p);
+        return in_ball(q, {0, 0, 0}, 1.5) && !in_ball(q, {0.8, 0, 0}, 0.7);
+    };
+    const SceneDistance distance(scene);
+    DistanceProbe probe(distance);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> coordinate(-2.5, 2.5), unit(-1.0, 1.0);
+    int deep = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
+        if (!inside(p)) continue;
+        const double depth = probe.inside_at(p, 2.0).distance;
+        if (depth > 0.0) ++deep;
+        for (int j = 0; j < 200; ++j) {
+            Vec3d v{unit(random), unit(random), unit(random)};
+            if (!(length(v) > 1e-3)) continue;
+            const Vec3d q = p + normalize(v) * (0.999 * depth * std::cbrt(std::abs(unit(random))));
+            ASSERT_TRUE(inside(q)) << "a point outside at distance " << length(q - p) << " < depth bound " << depth;
+        }
+    }
+    EXPECT_GT(deep, 100);
+}
+
+TEST(SceneDistance, RefusesFunctionsTooLargeToBoundAtEveryStep) {
+    Expr sum = Expr(0.0);
+    for (int i = 0; i < 1500; ++i) sum = sum + exp(-ball({0.001 * i, 0, 0}, 1));
+    Scene scene;
+    scene.nodes.push_back(make_object_node([&] {
+        Object o;
+        o.surface = Expr(0.5) - sum;
+        return o;
+    }(), "big"));
+    try {
+        const SceneDistance distance(scene);
+        FAIL() << "a function of more than 4096 operations was taken";
+    } catch (const RenderError& e) {
+        EXPECT_NE(std::string(e.what()).find("object 'big' has"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("--spp"), std::string::npos) << e.what();
+    }
 }
 
 TEST(SceneDistance, DirectionPointsAtTheNearestSurface) {

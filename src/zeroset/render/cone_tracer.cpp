@@ -4,11 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "zeroset/accel/primitive.hpp"
 
 namespace zeroset {
+
+namespace {
+constexpr double infinity = std::numeric_limits<double>::infinity();
+}  // namespace
 
 double disk_coverage(double u) {
     if (u >= 1.0) return 0.0;
@@ -45,7 +50,14 @@ void ConeTracer::grow_boxes(const Vec3d& eye) {
                           corner & 4 ? box.hi.z : box.lo.z};
             farthest = std::max(farthest, length(c - eye));
         }
-        const double margin = footprint_ * farthest * 1.01 + least_step_;
+        // A point of the box within r(t) = κt of the ray's point has
+        // t ≤ farthest / (1 − κ).
+        if (footprint_ >= 0.5) {  // pixels wider than half their distance: no useful box
+            grown_.back() = {{-infinity, -infinity, -infinity}, {infinity, infinity, infinity}};
+            unbounded_.push_back(static_cast<int>(i));
+            continue;
+        }
+        const double margin = footprint_ * farthest / (1.0 - footprint_) * 1.01 + least_step_;
         grown_.back() = {box.lo - Vec3d{margin, margin, margin}, box.hi + Vec3d{margin, margin, margin}};
         bounded_.push_back(static_cast<int>(i));
         bounded_boxes.push_back(grown_.back());

@@ -6,10 +6,12 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <unordered_map>
 
 #include "zeroset/accel/primitive.hpp"
 #include "zeroset/expr/lipschitz.hpp"
+#include "zeroset/render/render_settings.hpp"
 
 namespace zeroset {
 
@@ -59,6 +61,23 @@ const DistanceBound& larger(const DistanceBound& a, const DistanceBound& b) { re
 
 }  // namespace
 
+std::unique_ptr<Tape> SceneDistance::bounded_tape(const SceneNode& node) {
+    const Object& object = node.object;
+    const auto refuse = [&](const std::string& size) {
+        const std::string name = node.name.empty() ? "an object" : "object '" + node.name + "'";
+        throw RenderError(name + " has " + size + ": cone antialiasing bounds an object's whole function at every "
+                          "step, and takes functions of at most " + std::to_string(max_clauses) +
+                          " operations and blobs of at most " + std::to_string(max_blob_components) +
+                          " components; antialias this scene with samples (--spp) instead");
+    };
+    // A blob's field is a sum over its components: refused before it is built.
+    if (object.blob && object.blob->components().size() > max_blob_components)
+        refuse(std::to_string(object.blob->components().size()) + " blob components");
+    auto tape = std::make_unique<Tape>(surface_of(object));
+    if (tape->clauses().size() > max_clauses) refuse(std::to_string(tape->clauses().size()) + " operations");
+    return tape;
+}
+
 SceneDistance::SceneDistance(const Scene& scene) {
     reach_ = empty_box();
     std::unordered_map<const SceneNode*, int> tape_of;
@@ -79,7 +98,7 @@ int SceneDistance::add(const SceneNode& scene_node, const Mat4& to_scene,
         node.bounds = object.bounds;
         // One tape for each distinct object, however often it is placed.
         const auto [it, fresh] = tape_of.emplace(&scene_node, static_cast<int>(tapes_.size()));
-        if (fresh) tapes_.push_back(std::make_unique<Tape>(surface_of(object)));
+        if (fresh) tapes_.push_back(bounded_tape(scene_node));
         node.tape = it->second;
         const Box3 box = object.bounds.enclosing_box();
         if (is_bounded(box)) reach_ = united(reach_, here.transform_box(box));
@@ -179,7 +198,11 @@ DistanceProbe::Pair DistanceProbe::leaf_at(int index, const Vec3d& p, double rea
     ++evaluations_;
     if (std::isnan(f)) return {{0.0, -1, false, false}, {0.0, -1, true, false}};  // nothing is known here
     const Vec3d r{local_reach, local_reach, local_reach};
-    const Box3 near = overlap({q - r, q + r}, node.bounds.enclosing_box());
+    // Within the bounds, the way to the nearest surface stays in them (they
+    // are convex), so |∇f| need only be bounded there; from outside, it
+    // crosses space beyond them, where f is not bounded by the box's slope.
+    const Box3 ball_box{q - r, q + r};
+    const Box3 near = outside_bounds > 0.0 ? ball_box : overlap(ball_box, node.bounds.enclosing_box());
     const double slope = lipschitz_bound(slopes_[tape], near).constant;
     ++evaluations_;
     const double clear = slope > 0.0 ? std::min(std::abs(f) / slope, local_reach) : local_reach;

@@ -3,9 +3,11 @@
 // unbounding sphere (survey §5.2, eq. 30) taken from one surface to the
 // whole scene tree:
 //   - a leaf gives f(p)/G, where G bounds |∇f| (interval gradient, as
-//     expr/lipschitz.hpp) over the part of a ball of radius `reach` around p
-//     that lies in the object's bounds — so no surface lies nearer than
-//     min(f(p)/G, reach); outside its bounds, the distance to them counts too;
+//     expr/lipschitz.hpp) over the box around a ball of radius `reach`
+//     around p — cut to the object's bounds when p is inside them, since
+//     the way to the nearest surface then stays in them — so no surface
+//     lies nearer than min(f(p)/G, reach); outside its bounds, the distance
+//     to them counts too;
 //   - CSG combines the bounds of the distance to each solid and to its
 //     complement: a union takes the smallest, an intersection the largest,
 //     a difference A − B the largest of A's and B's complement's;
@@ -34,6 +36,14 @@ namespace zeroset {
 
 class SceneDistance {
 public:
+    /// The largest function (in tape clauses) an object may have: each
+    /// bound walks it whole, a point and an interval gradient, at every step.
+    static constexpr std::size_t max_clauses = 4096;
+    /// A blob's field has several clauses a component: past this many, it
+    /// is refused before its field is built.
+    static constexpr std::size_t max_blob_components = 512;
+
+    /// Throws RenderError for an object past max_clauses or max_blob_components.
     explicit SceneDistance(const Scene& scene);
 
     /// A box holding every bounded object, in the scene's space: cone
@@ -58,6 +68,8 @@ private:
         std::vector<int> children;
     };
 
+    /// The object's tape, or a RenderError naming it when it is too large.
+    static std::unique_ptr<Tape> bounded_tape(const SceneNode& node);
     /// Appends the node and those below it; returns its index.
     int add(const SceneNode& node, const Mat4& to_scene, std::unordered_map<const SceneNode*, int>& tape_of);
     /// A box holding the node's solid, in the scene's space.
