@@ -46,6 +46,18 @@ double distance_to_bounds(const Vec3d& p, const Bounds& bounds) {
     return std::sqrt(sum);
 }
 
+/// The point of the bounds nearest p: p itself inside them.
+Vec3d nearest_in_bounds(const Vec3d& p, const Bounds& bounds) {
+    if (bounds.kind == Bounds::Kind::None) return p;
+    if (bounds.kind == Bounds::Kind::Sphere) {
+        const Vec3d v = p - bounds.center;
+        const double from_center = length(v);
+        return from_center <= bounds.radius ? p : bounds.center + v * (bounds.radius / from_center);
+    }
+    return {std::clamp(p.x, bounds.box.lo.x, bounds.box.hi.x), std::clamp(p.y, bounds.box.lo.y, bounds.box.hi.y),
+            std::clamp(p.z, bounds.box.lo.z, bounds.box.hi.z)};
+}
+
 /// From p inside the bounds, the distance to their boundary.
 double depth_in_bounds(const Vec3d& p, const Bounds& bounds) {
     if (bounds.kind == Bounds::Kind::None) return infinity;
@@ -194,21 +206,21 @@ DistanceProbe::Pair DistanceProbe::leaf_at(int index, const Vec3d& p, double rea
     if (outside_bounds >= local_reach) return {in_scene(outside_bounds, false, true), none_inside};
 
     const auto tape = static_cast<std::size_t>(node.tape);
-    const double f = values_[tape](q.x, q.y, q.z);
-    ++evaluations_;
-    if (std::isnan(f)) return {{0.0, -1, false, false}, {0.0, -1, true, false}};  // nothing is known here
     const Vec3d r{local_reach, local_reach, local_reach};
-    // Within the bounds, the way to the nearest surface stays in them (they
-    // are convex), so |∇f| need only be bounded there; from outside, it
-    // crosses space beyond them, where f is not bounded by the box's slope.
-    const Box3 ball_box{q - r, q + r};
-    const Box3 near = outside_bounds > 0.0 ? ball_box : overlap(ball_box, node.bounds.enclosing_box());
+    const Box3 near = overlap({q - r, q + r}, node.bounds.enclosing_box());  // where the solid within reach lies
     const double slope = lipschitz_bound(slopes_[tape], near).constant;
-    ++evaluations_;
+    // f at the bounds' point nearest q (q itself inside them). Every point s
+    // of the convex bounds has |q − s|² ≥ |q − c|² + |c − s|², and the way
+    // from c to s stays in the bounds and the ball, where the slope holds.
+    const Vec3d c = nearest_in_bounds(q, node.bounds);
+    const double f = values_[tape](c.x, c.y, c.z);
+    evaluations_ += 2;
+    if (std::isnan(f)) return {{0.0, -1, false, false}, {0.0, -1, true, false}};  // nothing is known here
     const double clear = slope > 0.0 ? std::min(std::abs(f) / slope, local_reach) : local_reach;
     if (outside_bounds > 0.0 || f > 0.0) {
         const double by_function = f > 0.0 ? clear : 0.0;
-        return {in_scene(std::max(outside_bounds, by_function), false, outside_bounds >= by_function), none_inside};
+        const double distance = std::min(std::hypot(outside_bounds, by_function), local_reach);
+        return {in_scene(distance, false, outside_bounds >= by_function), none_inside};
     }
     const double depth = depth_in_bounds(q, node.bounds);
     return {in_scene(0.0, false, false), in_scene(std::min(clear, depth), true, depth < clear)};

@@ -2,12 +2,12 @@
 // solids, for cone tracing (render/cone_tracer.hpp). It is sphere tracing's
 // unbounding sphere (survey §5.2, eq. 30) taken from one surface to the
 // whole scene tree:
-//   - a leaf gives f(p)/G, where G bounds |∇f| (interval gradient, as
-//     expr/lipschitz.hpp) over the box around a ball of radius `reach`
-//     around p — cut to the object's bounds when p is inside them, since
-//     the way to the nearest surface then stays in them — so no surface
-//     lies nearer than min(f(p)/G, reach); outside its bounds, the distance
-//     to them counts too;
+//   - a leaf gives f(c)/G, where c is the point of its (convex) bounds
+//     nearest p and G bounds |∇f| (interval gradient, as expr/lipschitz.hpp)
+//     over the part in the bounds of the box around a ball of radius
+//     `reach` around p: the way from c to the nearest surface stays in the
+//     bounds and the ball, so no surface lies nearer than the hypotenuse
+//     of p's distance to the bounds and f(c)/G, nor beyond reach;
 //   - CSG combines the bounds of the distance to each solid and to its
 //     complement: a union takes the smallest, an intersection the largest,
 //     a difference A − B the largest of A's and B's complement's;
