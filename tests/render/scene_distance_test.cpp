@@ -36,13 +36,23 @@ SceneNodePtr combine(SceneNode::Kind kind, std::vector<SceneNodePtr> children) {
 
 using Membership = std::function<bool(const Vec3d&)>;
 
+/// A random point within the ball of the given radius around p (spread
+/// over the ball's volume), or p itself for a radius 0.
+Vec3d point_in_ball(std::mt19937& random, const Vec3d& p, double radius) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (;;) {
+        const Vec3d v{unit(random), unit(random), unit(random)};
+        if (length(v) > 1e-3 && length(v) <= 1.0) return p + v * radius;
+    }
+}
+
 /// Random points around the scene: at each, no point sampled in the ball of
 /// the bound's radius is inside a solid. Returns how many points had a bound > 0.
 int check_bound_is_clear(const Scene& scene, const Membership& inside, double reach) {
     const SceneDistance distance(scene);
     DistanceProbe probe(distance);
     std::mt19937 random(7);
-    std::uniform_real_distribution<double> coordinate(-4.0, 4.0), unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> coordinate(-4.0, 4.0);
     int positive = 0;
     for (int i = 0; i < 400; ++i) {
         const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
@@ -55,12 +65,9 @@ int check_bound_is_clear(const Scene& scene, const Membership& inside, double re
         }
         if (bound.distance > 0.0) ++positive;
         for (int j = 0; j < 200; ++j) {
-            Vec3d v{unit(random), unit(random), unit(random)};
-            if (!(length(v) > 1e-3)) continue;
-            v = normalize(v) * (0.999 * bound.distance * std::cbrt(std::abs(unit(random))));
-            const Vec3d q = p + v;
+            const Vec3d q = point_in_ball(random, p, 0.999 * bound.distance);
             if (inside(q)) {
-                ADD_FAILURE() << "a solid point at distance " << length(v) << " < bound " << bound.distance;
+                ADD_FAILURE() << "a solid point at distance " << length(q - p) << " < bound " << bound.distance;
                 return -1;
             }
         }
@@ -105,7 +112,7 @@ TEST(SceneDistance, UnionIntersectionAndDifferenceBoundsAreClear) {
 TEST(SceneDistance, TransformsAndBoundsThatCutAreHonoured) {
     // A unit ball stretched by 2 along x and moved; and a ball cut in half by its bounds.
     const Mat4 placed = Mat4::translate({1, 0.5, 0}) * Mat4::scale({2, 0.7, 1});
-    const Box3 half{{-3, -3, -3}, {0, 3, 3}};
+    const Box3 half{{-3, -4, -3}, {0, 3, 3}};  // it cuts the ball at x = 0 only
     Scene scene;
     scene.nodes.push_back(object_node(ball({0, 0, 0}, 1), wide, placed));
     scene.nodes.push_back(object_node(ball({0, -2, 0}, 1.2), half));
@@ -148,7 +155,7 @@ TEST(SceneDistance, DepthBoundStaysInsideTheSolid) {
     const SceneDistance distance(scene);
     DistanceProbe probe(distance);
     std::mt19937 random(11);
-    std::uniform_real_distribution<double> coordinate(-2.5, 2.5), unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> coordinate(-2.5, 2.5);
     int deep = 0;
     for (int i = 0; i < 2000; ++i) {
         const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
@@ -156,13 +163,49 @@ TEST(SceneDistance, DepthBoundStaysInsideTheSolid) {
         const double depth = probe.inside_at(p, 2.0).distance;
         if (depth > 0.0) ++deep;
         for (int j = 0; j < 200; ++j) {
-            Vec3d v{unit(random), unit(random), unit(random)};
-            if (!(length(v) > 1e-3)) continue;
-            const Vec3d q = p + normalize(v) * (0.999 * depth * std::cbrt(std::abs(unit(random))));
+            const Vec3d q = point_in_ball(random, p, 0.999 * depth);
             ASSERT_TRUE(inside(q)) << "a point outside at distance " << length(q - p) << " < depth bound " << depth;
         }
     }
     EXPECT_GT(deep, 100);
+}
+
+TEST(SceneDistance, BoxesSaidToHoldNoSolidHoldNone) {
+    // Random boxes over a difference and a union, one of them moved: where
+    // interval analysis says a box is empty, no sampled point of it is inside.
+    const SceneNodePtr a = object_node(ball({-0.5, 0, 0}, 1), wide), b = object_node(ball({0.6, 0.2, 0}, 0.9), wide);
+    auto moved = std::make_shared<SceneNode>(*object_node(ball({0, 0, 0}, 0.5), {{-1, -1, -1}, {1, 1, 1}}));
+    moved->transform = Mat4::translate({0, 2.2, 0}) * Mat4::scale({2, 1, 1});
+    Scene scene;
+    scene.nodes.push_back(combine(SceneNode::Kind::Difference, {a, b}));
+    scene.nodes.push_back(moved);
+    const Mat4 to_moved = moved->transform.inverse().value();
+    const auto inside = [&](const Vec3d& p) {
+        return (in_ball(p, {-0.5, 0, 0}, 1) && !in_ball(p, {0.6, 0.2, 0}, 0.9)) ||
+               in_ball(to_moved.transform_point(p), {0, 0, 0}, 0.5);
+    };
+    const SceneDistance distance(scene);
+    DistanceProbe probe(distance);
+    const std::vector<int> roots{0, 1};
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> coordinate(-3.0, 3.0), size(0.01, 0.8), unit(0.0, 1.0);
+    int empty = 0, full = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Vec3d lo{coordinate(random), coordinate(random), coordinate(random)};
+        const Box3 box{lo, lo + Vec3d{size(random), size(random), size(random)}};
+        if (!probe.holds_no_solid(box, roots)) {
+            ++full;
+            continue;
+        }
+        ++empty;
+        for (int j = 0; j < 100; ++j) {
+            const Vec3d s = box.hi - box.lo;
+            const Vec3d p = box.lo + Vec3d{unit(random) * s.x, unit(random) * s.y, unit(random) * s.z};
+            ASSERT_FALSE(inside(p)) << "a solid point in a box said to hold none";
+        }
+    }
+    EXPECT_GT(empty, 500);
+    EXPECT_GT(full, 100);
 }
 
 TEST(SceneDistance, RefusesFunctionsTooLargeToBoundAtEveryStep) {

@@ -102,6 +102,8 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
         in_stretch = false;
     };
     double t = span->t0, window = span->t1 - span->t0;
+    double jump = 0.0;          // the stretch of t an interval test tries next; 0: none
+    double reach_factor = 4.0;  // how many point steps long it is
     int steps = 0;
     std::size_t next_window = 0;  // windows_ before it have begun
     open_.clear();
@@ -120,6 +122,21 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
             window = span->t1 - t;
             continue;
         }
+        if (!in_stretch && jump > 0.0) {
+            // Interval analysis over the cone (survey Fig. 9, step 2): a
+            // stretch of it that holds no solid is passed whole, and the next
+            // try is twice as long — sphere tracing's slow approach to a
+            // surface met at a grazing angle becomes a few such jumps.
+            const double t1 = std::min({t + jump, next_start, span->t1});
+            const double r1 = footprint_ * t1;
+            const Vec3d a = ray.at(t), b = ray.at(t1), grow{r1, r1, r1};
+            if (t1 > t && probe_.holds_no_solid({min(a, b) - grow, max(a, b) + grow}, active_)) {
+                t = t1;
+                jump *= 2.0;
+                continue;
+            }
+            reach_factor = std::max(0.5 * reach_factor, 1.5);  // the jumps fail here: try shorter ones
+        }
         const double radius = footprint_ * t;
         const DistanceBound bound = probe_.outside_at(ray.at(t), std::max(window, 2.0 * radius), active_);
         const double ratio = radius > 0.0 ? bound.distance / radius : 1.0;
@@ -135,6 +152,7 @@ int ConeTracer::find_edges(const Ray& ray, double t_end, bool ends_on_hit, ConeC
         }
         const double step = std::max({bound.distance, 0.5 * radius, least_step_});
         window = 2.0 * step;
+        jump = bound.distance > 2.0 * radius ? reach_factor * step : 0.0;  // far from every surface: try intervals next
         t = std::min(t + step, std::max(next_start, t + least_step_));
     }
     // A stretch still open where the ray hits is the hit surface coming

@@ -21,6 +21,9 @@
 // shadows. Samples are composited front to back over what the ray sees:
 // C = Σ (1 − A_i) α_i c_i + (1 − A) c_ray.
 //
+// Far from every surface, interval analysis over the cone's box passes
+// whole stretches of t that hold no solid (Fig. 9, step 2).
+//
 // Steps are max(d, r/2), at least a millionth of the scene's size, so t
 // grows at least geometrically and each march ends; it stops, keeping what
 // it found, after max_steps. The outer march never passes the ray's hit,

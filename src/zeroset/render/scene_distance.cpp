@@ -140,6 +140,7 @@ Box3 SceneDistance::box_of(int index) const {
 DistanceProbe::DistanceProbe(const SceneDistance& scene) : scene_(&scene) {
     for (const auto& tape : scene.tapes_) {
         values_.emplace_back(*tape);
+        enclosures_.emplace_back(*tape);
         slopes_.emplace_back(*tape);
         gradients_.emplace_back(*tape);
     }
@@ -168,6 +169,39 @@ DistanceBound DistanceProbe::inside_at(const Vec3d& p, double reach, std::span<c
             deepest = larger(deepest, node_at(scene_->roots_[i], p, reach, false).inside);
     }
     return deepest;
+}
+
+bool DistanceProbe::holds_no_solid(const Box3& box, std::span<const int> roots) {
+    for (const int root : roots) {
+        const auto i = static_cast<std::size_t>(root);
+        if (overlap(box, scene_->root_boxes_[i]).valid() && !node_holds_none(scene_->roots_[i], box)) return false;
+    }
+    return true;
+}
+
+bool DistanceProbe::node_holds_none(int index, const Box3& box) {
+    const SceneDistance::Node& node = scene_->nodes_[static_cast<std::size_t>(index)];
+    if (node.kind == SceneNode::Kind::Object) {
+        const Box3 local = overlap(node.to_local.transform_box(box), node.bounds.enclosing_box());
+        if (!local.valid()) return true;
+        const Interval f = enclosures_[static_cast<std::size_t>(node.tape)](
+            Interval(local.lo.x, local.hi.x), Interval(local.lo.y, local.hi.y), Interval(local.lo.z, local.hi.z));
+        ++evaluations_;
+        return !f.is_empty() && f.lo > 0.0;  // undefined somewhere: unsure
+    }
+    if (node.children.empty()) return true;
+    switch (node.kind) {
+        case SceneNode::Kind::Group:  // a union: none of its parts
+            for (const int child : node.children)
+                if (!node_holds_none(child, box)) return false;
+            return true;
+        case SceneNode::Kind::Intersection:  // within each part
+            for (const int child : node.children)
+                if (node_holds_none(child, box)) return true;
+            return false;
+        default:  // a difference: within its first part
+            return node_holds_none(node.children.front(), box);
+    }
 }
 
 DistanceProbe::Pair DistanceProbe::node_at(int index, const Vec3d& p, double reach, bool only_outside) {

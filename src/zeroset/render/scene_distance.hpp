@@ -105,6 +105,9 @@ public:
     /// solid (capped at `reach`); 0 outside them all.
     DistanceBound inside_at(const Vec3d& p, double reach);
     DistanceBound inside_at(const Vec3d& p, double reach, std::span<const int> roots);
+    /// Whether the box (in the scene's space) holds no point of the solids
+    /// of those top-level nodes, by interval analysis: false when unsure.
+    bool holds_no_solid(const Box3& box, std::span<const int> roots);
     /// The unit direction, in the scene's space, in which the bound's leaf
     /// surface is nearest to first order: down its gradient, or up it for a
     /// complement — or towards the nearest point or face of its bounds, when
@@ -123,10 +126,13 @@ private:
     /// Both, within reach; `only_outside` when the caller needs only the
     /// first, which lets unions look no further than their nearest child.
     Pair node_at(int node, const Vec3d& p, double reach, bool only_outside);
+    /// holds_no_solid for one node and a box in the scene's space.
+    bool node_holds_none(int node, const Box3& box);
     Pair leaf_at(int node, const Vec3d& p, double reach);
 
     const SceneDistance* scene_;
     std::vector<Evaluator<double>> values_;
+    std::vector<Evaluator<Interval>> enclosures_;
     std::vector<Evaluator<Dual<Interval>>> slopes_;
     std::vector<Evaluator<Dual<double>>> gradients_;
     std::uint64_t evaluations_ = 0;
