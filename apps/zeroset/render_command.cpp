@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "commands.hpp"
@@ -80,9 +81,11 @@ RenderSettings settings_for(const Options& options, const Scene& scene, bool lay
     settings.threads = options.integer("--threads").value_or(0);
     settings.cone_antialiasing = scene.image.cone_antialiasing;
     if (const auto antialias = options.value("--antialias")) {
-        if (*antialias != "samples" && *antialias != "cone")
-            throw UsageError("unknown antialiasing '" + *antialias + "' (known: samples, cone)");
-        settings.cone_antialiasing = *antialias == "cone";
+        try {
+            settings.cone_antialiasing = cone_antialiasing_named(*antialias);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(e.what());
+        }
     }
     settings.layers = layers;
     settings.method = options.choice("--method", "method", all_methods(), method_name);

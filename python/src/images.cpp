@@ -57,11 +57,7 @@ py::object render_scene(const Scene& scene, std::optional<int> width, std::optio
     settings.threads = threads;
     settings.layers = layers;
     settings.cone_antialiasing = scene.image.cone_antialiasing;
-    if (antialias) {
-        if (*antialias != "samples" && *antialias != "cone")
-            throw py::value_error("unknown antialiasing '" + *antialias + "' (known: samples, cone)");
-        settings.cone_antialiasing = *antialias == "cone";
-    }
+    if (antialias) settings.cone_antialiasing = cone_antialiasing_named(*antialias);
     if (method) settings.method = named(*method, "method", all_methods(), method_name);
     // A copy (shallow: the nodes are shared and immutable), since another
     // Python thread may change the scene while this one renders.

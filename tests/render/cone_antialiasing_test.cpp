@@ -134,7 +134,7 @@ EdgeErrors measure(const Scene& scene) {
         }
     e.one_ray /= std::max(e.edges, 1);
     e.cone /= std::max(e.edges, 1);
-    e.cone_edges = stats.cone_edges;
+    e.cone_edges = stats.cone.edges;
     EXPECT_EQ(stats.camera_rays, 120u * 90u);
     std::printf("%d edge pixels: mean error one ray %.4f, cone %.4f; %d of %d smooth pixels changed\n", e.edges,
                 e.one_ray, e.cone, e.smooth_changed, e.smooth);

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "zeroset/accel/bvh.hpp"
+#include "zeroset/render/render_stats.hpp"
 #include "zeroset/render/scene_distance.hpp"
 #include "zeroset/render/scene_tracer.hpp"
 #include "zeroset/render/shading.hpp"
@@ -47,15 +48,6 @@ namespace zeroset {
 /// The share of a disk of radius 1 beyond a straight line at distance u
 /// from its centre: ½ at u = 0, 0 for u ≥ 1, 1 for u ≤ −1.
 double disk_coverage(double u);
-
-struct ConeCounters {
-    std::uint64_t steps = 0;         // distance bounds taken along cones
-    std::uint64_t edges = 0;         // edge samples shaded
-    std::uint64_t missed_edges = 0;  // edges whose aimed rays found no surface in the cone (not blended)
-    std::uint64_t aimed_rays = 0;    // rays aimed across edges
-    std::uint64_t gave_up = 0;       // cones stopped at max_steps
-    std::uint64_t evaluations = 0;   // of the distance bounds
-};
 
 class ConeTracer {
 public:

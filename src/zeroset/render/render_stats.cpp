@@ -30,11 +30,11 @@ std::string summary_line(const RenderStats& s) {
     if (s.counters.failed_queries > 0)
         line += "; " + count(s.counters.failed_queries) + " ray queries failed (a method's budget spent: no hit there)";
     if (s.cone_antialiasing) {
-        line += "; cone antialiasing: " + count(s.cone_edges) + " edges (" + count(s.cone_aimed_rays) + " rays aimed across them), " +
-                count(s.cone_steps) + " steps, " +
-                count(s.cone_evaluations) + " evaluations";
-        if (s.cone_missed_edges) line += ", " + count(s.cone_missed_edges) + " edges no surface reached into";
-        if (s.cone_gave_up) line += ", " + count(s.cone_gave_up) + " cones stopped at their step limit";
+        const ConeCounters& c = s.cone;
+        line += "; cone antialiasing: " + count(c.edges) + " edges (" + count(c.aimed_rays) +
+                " rays aimed across them), " + count(c.steps) + " steps, " + count(c.evaluations) + " evaluations";
+        if (c.missed_edges) line += ", " + count(c.missed_edges) + " edges no surface reached into";
+        if (c.gave_up) line += ", " + count(c.gave_up) + " cones stopped at their step limit";
     }
     if (!s.methods.empty()) {
         line += "; objects:";

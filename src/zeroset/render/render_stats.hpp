@@ -10,6 +10,22 @@
 
 namespace zeroset {
 
+/// Cone antialiasing's work (render/cone_tracer.hpp).
+struct ConeCounters {
+    std::uint64_t steps = 0;         // distance bounds taken along cones
+    std::uint64_t edges = 0;         // edge samples shaded
+    std::uint64_t missed_edges = 0;  // edges whose aimed rays found no surface in the cone (not blended)
+    std::uint64_t aimed_rays = 0;    // rays aimed across edges
+    std::uint64_t gave_up = 0;       // cones stopped at max_steps
+    std::uint64_t evaluations = 0;   // of the distance bounds
+
+    ConeCounters& operator+=(const ConeCounters& o) {
+        steps += o.steps, edges += o.edges, missed_edges += o.missed_edges;
+        aimed_rays += o.aimed_rays, gave_up += o.gave_up, evaluations += o.evaluations;
+        return *this;
+    }
+};
+
 struct RenderStats {
     int width = 0;
     int height = 0;
@@ -22,14 +38,8 @@ struct RenderStats {
     std::uint64_t reflection_rays = 0;
     [[nodiscard]] std::uint64_t rays() const { return camera_rays + shadow_rays + reflection_rays; }
     std::uint64_t hits = 0;
-    /// Cone antialiasing's work (render/cone_tracer.hpp); all zero without it.
     bool cone_antialiasing = false;
-    std::uint64_t cone_steps = 0;
-    std::uint64_t cone_edges = 0;
-    std::uint64_t cone_aimed_rays = 0;
-    std::uint64_t cone_missed_edges = 0;
-    std::uint64_t cone_gave_up = 0;
-    std::uint64_t cone_evaluations = 0;
+    ConeCounters cone;  // all zero without cone antialiasing
     TraceCounters counters;
     /// The distinct objects (leaves) by the method that traces them;
     /// planes count as "plane".

@@ -247,12 +247,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
         stats.shadow_rays += t.shading.shadow_rays;
         stats.reflection_rays += t.shading.reflection_rays;
         stats.counters += t.stats.counters;
-        stats.cone_steps += t.cone.steps;
-        stats.cone_edges += t.cone.edges;
-        stats.cone_aimed_rays += t.cone.aimed_rays;
-        stats.cone_missed_edges += t.cone.missed_edges;
-        stats.cone_gave_up += t.cone.gave_up;
-        stats.cone_evaluations += t.cone.evaluations;
+        stats.cone += t.cone;
         if (t.first_nan) throw RenderError(nan_message(*t.first_nan));
     }
     if (signal.over_budget) throw RenderError(budget_message(signal.budget, !settings.max_evaluations));

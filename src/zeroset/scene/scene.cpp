@@ -5,6 +5,12 @@
 
 namespace zeroset {
 
+bool cone_antialiasing_named(std::string_view name) {
+    if (name == antialiasing_names[1]) return true;
+    if (name == antialiasing_names[0]) return false;
+    throw std::invalid_argument("unknown antialiasing '" + std::string(name) + "' (known: samples, cone)");
+}
+
 Expr surface_of(const Object& object) { return object.blob ? object.blob->field_expression() : object.surface; }
 
 SceneNodePtr make_object_node(Object object, std::string name, std::optional<Material> material) {

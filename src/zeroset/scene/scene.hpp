@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "zeroset/expr/blob_model.hpp"
@@ -117,6 +118,12 @@ struct ImageSettings {
     /// a ray past them sees black.
     int reflection_depth = 5;
 };
+
+/// The ways to antialias, by name: `samples` (by --spp alone) and `cone`.
+inline constexpr std::array<std::string_view, 2> antialiasing_names{"samples", "cone"};
+/// Whether `name` asks for cone antialiasing; std::invalid_argument
+/// ("unknown antialiasing 'X' (known: samples, cone)") for another name.
+bool cone_antialiasing_named(std::string_view name);
 
 /// The deepest mirror recursion a render allows (each bounce is a stack frame).
 inline constexpr int max_reflection_depth = 64;

@@ -19,7 +19,6 @@ constexpr std::array<std::string_view, 16> statement_names{
     "image", "camera", "light",        "background", "ambient",  "let",   "include", "object", "blob",
     "group", "union",  "intersection", "difference", "instance", "shape", "for"};
 constexpr std::array<std::string_view, 5> image_keys{"width", "height", "spp", "antialias", "reflection_depth"};
-constexpr std::array<std::string_view, 2> antialiasing_names{"samples", "cone"};
 constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};
 constexpr std::array<std::string_view, 4> light_keys{"from", "direction", "color", "shadows"};
 constexpr std::array<std::string_view, 6> material_keys{"color", "ambient", "diffuse", "specular", "shininess", "reflection"};
@@ -111,7 +110,7 @@ void SceneParser::image(const Token& keyword) {
         } else if (key.text == "spp") {
             image.samples_per_pixel = count("spp", max_samples_per_pixel);
         } else if (key.text == "antialias") {
-            image.cone_antialiasing = choice("antialiasing", antialiasing_names).text == "cone";
+            image.cone_antialiasing = cone_antialiasing_named(choice("antialiasing", antialiasing_names).text);
         } else {
             image.reflection_depth = count("reflection_depth", max_reflection_depth, 0);
         }
