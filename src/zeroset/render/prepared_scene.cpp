@@ -15,6 +15,7 @@
 
 #include "zeroset/accel/blob.hpp"
 #include "zeroset/accel/csg.hpp"
+#include "zeroset/accel/fractal.hpp"
 #include "zeroset/accel/group.hpp"
 #include "zeroset/accel/half_space.hpp"
 #include "zeroset/accel/instance.hpp"
@@ -26,7 +27,10 @@ namespace zeroset {
 PreparedScene::PreparedScene(const Scene& scene, const ObjectOverrides& overrides)
     : scene_(&scene), overrides_(overrides), lights_(scene.lights) {
     if (lights_.empty()) lights_.push_back({Light::Kind::Point, scene.camera.from, {}, {1.0, 1.0, 1.0}, true});
-    if (overrides.image_width > 0 && overrides.image_height > 0) measure_footprints(scene);
+    if (overrides.image_width > 0 && overrides.image_height > 0) {
+        measure_footprints(scene);
+        pixel_footprint_ = CameraRays(scene.camera, overrides.image_width, overrides.image_height).footprint_radius();
+    }
     std::vector<std::shared_ptr<const Primitive>> top;
     top.reserve(scene.nodes.size());
     for (const SceneNodePtr& node : scene.nodes) top.push_back(prepare(node));
@@ -108,6 +112,7 @@ std::vector<std::pair<std::string, int>> PreparedScene::method_counts() const {
     }
     if (planes_ > 0) counts.emplace_back("plane", planes_);
     if (!blobs_.empty()) counts.emplace_back("blob", static_cast<int>(blobs_.size()));
+    if (fractals_ > 0) counts.emplace_back("fractal", fractals_);
     return counts;
 }
 
@@ -147,10 +152,29 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             const Object& o = node->object;
             // An unnamed one is numbered among all the objects prepared so far.
             const std::string name = node->name.empty()
-                                         ? "#" + std::to_string(leaves_.size() + blobs_.size() + static_cast<std::size_t>(planes_) + 1)
+                                         ? "#" + std::to_string(leaves_.size() + blobs_.size() + static_cast<std::size_t>(planes_ + fractals_) + 1)
                                          : node->name;
             label = "object '" + name + "'";
             const Method method = overrides_.method.value_or(o.method);
+            if (o.fractal) {  // sphere traced by its estimate: no method applies
+                if (method != Method::Auto && method != Method::Sphere)
+                    throw RenderError("object '" + name + "' is a fractal, sphere traced by its distance estimate: the " +
+                                      std::string(method_name(method)) + " method needs an expression it does not have");
+                FractalDescription f;
+                f.name = name;
+                f.estimate = o.fractal;
+                f.material = around;
+                f.footprint = pixel_footprint_;
+                f.detail = o.fractal_detail;
+                around = no_material;
+                try {
+                    primitive = std::make_shared<const Fractal>(std::move(f));
+                } catch (const std::invalid_argument& e) {
+                    throw RenderError("fractal '" + name + "': " + e.what());
+                }
+                ++fractals_;
+                break;
+            }
             if (o.blob && method == Method::Auto) {  // the blob's own exact path
                 BlobDescription b;
                 b.name = name;

@@ -11,7 +11,14 @@ bool cone_antialiasing_named(std::string_view name) {
     throw std::invalid_argument("unknown antialiasing '" + std::string(name) + "' (known: samples, cone)");
 }
 
-Expr surface_of(const Object& object) { return object.blob ? object.blob->field_expression() : object.surface; }
+Expr surface_of(const Object& object) {
+    if (object.fractal)
+        throw std::invalid_argument(
+            "the object is a fractal (" + std::string(fractal_kind_info(object.fractal->parameters().kind).description) +
+            "): it has no expression f(x, y, z), only a distance estimate, so it can be rendered but not probed, "
+            "sliced, meshed or mapped");
+    return object.blob ? object.blob->field_expression() : object.surface;
+}
 
 SceneNodePtr make_object_node(Object object, std::string name, std::optional<Material> material) {
     auto node = std::make_shared<SceneNode>();

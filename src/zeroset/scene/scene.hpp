@@ -16,6 +16,7 @@
 #include "zeroset/math/ray.hpp"
 #include "zeroset/math/vec3.hpp"
 #include "zeroset/trace/bounds.hpp"
+#include "zeroset/trace/fractal_estimate.hpp"
 #include "zeroset/accel/octree.hpp"
 #include "zeroset/trace/method.hpp"
 
@@ -77,12 +78,18 @@ struct Object {
     std::shared_ptr<const BlobModel> blob;
     double blob_tolerance = default_blinn_tolerance;  // Blinn's cut-off, relative to the threshold
     bool blob_quadratics = false;  // metaballs: the survey's quadratic pieces instead of the exact kernel
+    /// A fractal (trace/fractal_estimate.hpp) when set, sphere traced by its
+    /// distance estimate: `surface` is then unused (it has no expression) and
+    /// `bounds` is its ball's box.
+    std::shared_ptr<const FractalEstimate> fractal;
+    double fractal_detail = 1.0;  // the hit tolerance, in pixel footprints (accel/fractal.hpp)
     /// The bounds may cut through the solid on purpose (a cut-away): no
     /// warning when they do (trace/bounds_cut.hpp).
     bool cut_by_bounds = false;
 };
 
-/// The object's f: its surface, or a blob's field as an expression.
+/// The object's f: its surface, or a blob's field as an expression. Throws
+/// std::invalid_argument for a fractal, which has none.
 Expr surface_of(const Object& object);
 
 struct SceneNode;

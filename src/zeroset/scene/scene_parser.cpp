@@ -15,8 +15,8 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 16> statement_names{
-    "image", "camera", "light",        "background", "ambient",  "let",   "include", "object", "blob",
+constexpr std::array<std::string_view, 17> statement_names{
+    "image", "camera", "light",        "background", "ambient",  "let",   "include", "object", "blob", "fractal",
     "group", "union",  "intersection", "difference", "instance", "shape", "for"};
 constexpr std::array<std::string_view, 5> image_keys{"width", "height", "spp", "antialias", "reflection_depth"};
 constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};

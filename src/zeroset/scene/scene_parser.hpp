@@ -4,7 +4,7 @@
 // filling a Scene as it reads. One parser reads a whole scene, following
 // includes; expressions are read by expression_parser.hpp. The statements
 // are split over scene_parser.cpp (settings and files), scene_nodes.cpp
-// (objects and the tree), blob_statement.cpp (blobs) and transforms.cpp
+// (objects and the tree), blob_statement.cpp (blobs), fractal_statement.cpp (fractals) and transforms.cpp
 // (affine maps).
 #pragma once
 
@@ -132,6 +132,7 @@ private:
     // blob_statement.cpp: blobs.
     struct BlobReading;
     SceneNodePtr blob(const Token& keyword);
+    SceneNodePtr fractal(const Token& keyword);
     /// Reads one entry of a blob's body into `reading`; false at none.
     bool blob_entry(BlobReading& reading);
     BlobComponent blob_component(const Token& keyword, BlobKernel kernel);
