@@ -22,9 +22,7 @@ std::vector<bool> coverage(const Scene& scene, int width, int height, std::optio
     return test::coverage(scene, settings);
 }
 
-double covered(const std::vector<bool>& mask) {
-    return static_cast<double>(std::count(mask.begin(), mask.end(), true)) / static_cast<double>(mask.size());
-}
+using test::covered;
 
 double differing(const std::vector<bool>& a, const std::vector<bool>& b) {
     int n = 0;

@@ -20,9 +20,7 @@ std::vector<bool> coverage(const Scene& scene, int width, int height) {
     return test::coverage(scene, settings);
 }
 
-double covered(const std::vector<bool>& mask) {
-    return static_cast<double>(std::count(mask.begin(), mask.end(), true)) / static_cast<double>(mask.size());
-}
+using test::covered;
 
 TEST(FractalScenes, EveryOneShowsItsFractal) {
     int scenes = 0;

@@ -3,6 +3,7 @@
 // must cover the same pixels).
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "zeroset/render/renderer.hpp"
@@ -17,6 +18,11 @@ inline std::vector<bool> coverage(const Scene& scene, const RenderSettings& sett
         mask.push_back(!(p.x == static_cast<float>(bg.x) && p.y == static_cast<float>(bg.y) &&
                          p.z == static_cast<float>(bg.z)));
     return mask;
+}
+
+/// The share of the pixels a mask covers.
+inline double covered(const std::vector<bool>& mask) {
+    return static_cast<double>(std::count(mask.begin(), mask.end(), true)) / static_cast<double>(mask.size());
 }
 
 }  // namespace zeroset::test
