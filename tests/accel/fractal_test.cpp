@@ -60,7 +60,9 @@ TEST(Fractal, HitsAndSpansOfTheBallMatchTheSphere) {
         const std::optional<Hit> hit = ball.first_hit(ray, 0.0, 100.0, scratch);
         if (disc <= 0.0) {
             // A miss, or a hit within the tolerance of the sphere (a near graze).
-            if (hit) EXPECT_LT(length(ray.at(hit->t)) - 1.0, ball.tolerance_at(hit->t) * 1.01) << i;
+            if (hit) {
+                EXPECT_LT(length(ray.at(hit->t)) - 1.0, ball.tolerance_at(hit->t) * 1.01) << i;
+            }
             continue;
         }
         ++hits;
@@ -69,7 +71,9 @@ TEST(Fractal, HitsAndSpansOfTheBallMatchTheSphere) {
         const double tolerance = ball.tolerance_at(enter);
         EXPECT_LE(hit->t, enter + 1e-12) << i;  // never inside
         // Stopped where the estimate (≥ a fifth of the distance here) fell below ε.
-        if (exit - enter > 10 * tolerance) EXPECT_LT(enter - hit->t, 5.0 * tolerance / std::abs(dot(normalize(ray.at(enter)), ray.dir))) << i;
+        if (exit - enter > 10 * tolerance) {
+            EXPECT_LT(enter - hit->t, 5.0 * tolerance / std::abs(dot(normalize(ray.at(enter)), ray.dir))) << i;
+        }
         SpanList spans;
         ball.spans(ray, 0.0, 100.0, scratch, spans);
         ASSERT_EQ(spans.size(), 1U) << i;
