@@ -168,7 +168,7 @@ TEST(SceneNodes, Errors) {
     EXPECT_EQ(error_of("shape s { object { surface x }"),
               "scene.zs:1:31: expected '}' to close the shape body opened at line 1, column 9, but found end of file");
     EXPECT_EQ(error_of("group { camera { } }"),
-              "scene.zs:1:9: expected an object, blob, fractal, group, union, intersection, difference, instance, let, for, a "
+              "scene.zs:1:9: expected an object, blob, fractal, sweep, group, union, intersection, difference, instance, let, for, a "
               "transform (translate, rotate, scale, shear, matrix), material or '}' but found 'camera'");
     EXPECT_EQ(error_of("for i from 0 to 1e9 { }"), "scene.zs:1:1: the loop would run more than 10000000 times");
     EXPECT_EQ(error_of("for i from 0 to 1 step 0 { }"), "scene.zs:1:24: the loop's step must not be 0");

@@ -112,13 +112,13 @@ TEST(SceneParser, EmptySceneIsValid) {
 TEST(SceneParser, StatementErrors) {
     EXPECT_EQ(error_of("camera { }\nfoo { }"),
               "scene.zs:2:1: expected a statement (image, camera, light, background, ambient, let, include, "
-              "object, blob, fractal, group, union, intersection, difference, instance, shape or for) but found 'foo'");
+              "object, blob, fractal, sweep, group, union, intersection, difference, instance, shape or for) but found 'foo'");
     EXPECT_EQ(error_of("f = x"),
               "scene.zs:1:1: expected a statement (image, camera, light, background, ambient, let, include, "
-              "object, blob, fractal, group, union, intersection, difference, instance, shape or for) but found 'f'; to bind a name, write: let f = ...");
+              "object, blob, fractal, sweep, group, union, intersection, difference, instance, shape or for) but found 'f'; to bind a name, write: let f = ...");
     EXPECT_EQ(error_of("camera { }\n(1, 2, 3)"),
               "scene.zs:2:1: expected a statement (image, camera, light, background, ambient, let, include, "
-              "object, blob, fractal, group, union, intersection, difference, instance, shape or for) but found '('");
+              "object, blob, fractal, sweep, group, union, intersection, difference, instance, shape or for) but found '('");
     EXPECT_EQ(error_of("camera fov 40"), "scene.zs:1:8: expected '{' but found 'fov'");
     EXPECT_EQ(error_of("camera { fov 40\n"),
               "scene.zs:2:1: expected '}' to close the camera block opened at line 1, column 1, but found end of file");

@@ -19,6 +19,7 @@
 #include "zeroset/accel/group.hpp"
 #include "zeroset/accel/half_space.hpp"
 #include "zeroset/accel/instance.hpp"
+#include "zeroset/accel/swept_sphere.hpp"
 #include "zeroset/render/camera_rays.hpp"
 #include "zeroset/render/render_settings.hpp"
 
@@ -113,6 +114,7 @@ std::vector<std::pair<std::string, int>> PreparedScene::method_counts() const {
     if (planes_ > 0) counts.emplace_back("plane", planes_);
     if (!blobs_.empty()) counts.emplace_back("blob", static_cast<int>(blobs_.size()));
     if (fractals_ > 0) counts.emplace_back("fractal", fractals_);
+    if (sweeps_ > 0) counts.emplace_back("sweep", sweeps_);
     return counts;
 }
 
@@ -152,7 +154,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             const Object& o = node->object;
             // An unnamed one is numbered among all the objects prepared so far.
             const std::string name = node->name.empty()
-                                         ? "#" + std::to_string(leaves_.size() + blobs_.size() + static_cast<std::size_t>(planes_ + fractals_) + 1)
+                                         ? "#" + std::to_string(leaves_.size() + blobs_.size() + static_cast<std::size_t>(planes_ + fractals_ + sweeps_) + 1)
                                          : node->name;
             label = "object '" + name + "'";
             const Method method = overrides_.method.value_or(o.method);
@@ -173,6 +175,22 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
                     throw RenderError("fractal '" + name + "': " + e.what());
                 }
                 ++fractals_;
+                break;
+            }
+            if (o.sweep) {  // exact by its polynomials: no method applies
+                if (method != Method::Auto && method != Method::Polynomial)
+                    throw RenderError("object '" + name + "' is a sweep, traced exactly by its segments' polynomials: the " +
+                                      std::string(method_name(method)) + " method needs an expression it does not have");
+                const PolynomialSolver solver = overrides_.solver.value_or(o.solver);
+                if (!isolates_every_root(solver))
+                    throw RenderError("object '" + name + "' is a sweep, whose polynomials need a solver that isolates "
+                                      "every root (sturm or descartes), not " + std::string(polynomial_solver_name(solver)));
+                std::vector<std::shared_ptr<const Primitive>> segments;
+                for (const SweptSegment& s : *o.sweep)
+                    segments.push_back(std::make_shared<const SweptSphere>(name, s, around, solver));
+                around = no_material;
+                primitive = segments.size() == 1 ? segments.front() : std::make_shared<Group>(std::move(segments));
+                ++sweeps_;
                 break;
             }
             if (o.blob && method == Method::Auto) {  // the blob's own exact path

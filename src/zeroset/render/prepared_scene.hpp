@@ -89,6 +89,7 @@ private:
     std::vector<std::string> warnings_;
     std::vector<const Blob*> blobs_;
     int fractals_ = 0;
+    int sweeps_ = 0;
     double pixel_footprint_ = 0.0;  // CameraRays::footprint_radius, for the fractals' hit tolerance (0: no image)
     int planes_ = 0;
     std::unordered_map<const SceneNode*, std::shared_ptr<const Primitive>> prepared_;  // by node, for sharing

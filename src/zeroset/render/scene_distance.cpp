@@ -86,6 +86,10 @@ std::unique_ptr<Tape> SceneDistance::bounded_tape(const SceneNode& node) {
         throw RenderError((node.name.empty() ? std::string("an object") : "object '" + node.name + "'") +
                           " is a fractal: cone antialiasing needs a bound on each object's distance, and a "
                           "fractal has only an estimate; antialias this scene with samples (--spp) instead");
+    if (object.sweep)
+        throw RenderError((node.name.empty() ? std::string("an object") : "object '" + node.name + "'") +
+                          " is a sweep: cone antialiasing bounds each object's distance through its expression, and "
+                          "a sweep has none; antialias this scene with samples (--spp) instead");
     // A blob's field is a sum over its components: refused before it is built.
     if (object.blob && object.blob->components().size() > max_blob_components)
         refuse(std::to_string(object.blob->components().size()) + " blob components");

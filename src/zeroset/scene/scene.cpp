@@ -17,6 +17,11 @@ Expr surface_of(const Object& object) {
             "the object is a fractal (" + std::string(fractal_kind_info(object.fractal->parameters().kind).description) +
             "): it has no expression f(x, y, z), only a distance estimate, so it can be rendered but not probed, "
             "sliced, meshed or mapped");
+    if (object.sweep)
+        throw std::invalid_argument(
+            "the object is a sweep (a sphere swept along a curve, " + std::to_string(object.sweep->size()) +
+            " segments): it has no expression f(x, y, z), only the polynomials of its segments along a ray, so it "
+            "can be rendered but not probed, sliced, meshed or mapped");
     return object.blob ? object.blob->field_expression() : object.surface;
 }
 

@@ -17,6 +17,7 @@
 #include "zeroset/math/vec3.hpp"
 #include "zeroset/trace/bounds.hpp"
 #include "zeroset/trace/fractal_estimate.hpp"
+#include "zeroset/trace/swept_sphere.hpp"
 #include "zeroset/accel/octree.hpp"
 #include "zeroset/trace/method.hpp"
 
@@ -83,13 +84,17 @@ struct Object {
     /// `bounds` is its ball's box.
     std::shared_ptr<const FractalEstimate> fractal;
     double fractal_detail = 1.0;  // the hit tolerance, in pixel footprints (accel/fractal.hpp)
+    /// A swept sphere (trace/swept_sphere.hpp) when set: its Bézier segments,
+    /// traced exactly by their polynomials; `surface` is then unused (it has
+    /// no expression) and `bounds` is the segments' box.
+    std::shared_ptr<const std::vector<SweptSegment>> sweep;
     /// The bounds may cut through the solid on purpose (a cut-away): no
     /// warning when they do (trace/bounds_cut.hpp).
     bool cut_by_bounds = false;
 };
 
 /// The object's f: its surface, or a blob's field as an expression. Throws
-/// std::invalid_argument for a fractal, which has none.
+/// std::invalid_argument for a fractal or a sweep, which have none.
 Expr surface_of(const Object& object);
 
 struct SceneNode;

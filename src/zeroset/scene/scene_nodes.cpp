@@ -18,8 +18,8 @@ namespace {
 
 constexpr std::array<std::string_view, 8> object_keys{"surface", "bounds", "method", "solver", "normals", "partition",
                                                       "material", "cut"};
-constexpr std::array<std::string_view, 8> node_keywords{"object",     "group",    "union", "intersection",
-                                                        "difference", "instance", "blob",  "fractal"};
+constexpr std::array<std::string_view, 9> node_keywords{"object",   "group", "union",   "intersection", "difference",
+                                                        "instance", "blob",  "fractal", "sweep"};
 
 
 /// True when f is exactly 0 at 64 points spread over the bounds (a fixed
@@ -75,6 +75,7 @@ void SceneParser::node_statement(const NodeSink& sink) {
     if (k == "object") sink(object(keyword));
     else if (k == "blob") sink(blob(keyword));
     else if (k == "fractal") sink(fractal(keyword));
+    else if (k == "sweep") sink(sweep(keyword));
     else if (k == "group" || k == "union") sink(composite(keyword, SceneNode::Kind::Group));
     else if (k == "intersection") sink(composite(keyword, SceneNode::Kind::Intersection));
     else if (k == "difference") sink(composite(keyword, SceneNode::Kind::Difference));
@@ -162,7 +163,7 @@ bool SceneParser::child_entry(SceneNode& node) {
         loop(entry, [this, &node] {
             while (!in_->accept(TokenKind::RightBrace))
                 if (!child_entry(node))
-                    in_->fail_expected("an object, blob, fractal, group, union, intersection, difference, instance, let, for or '}'");
+                    in_->fail_expected("an object, blob, fractal, sweep, group, union, intersection, difference, instance, let, for or '}'");
         });
         return true;
     }
@@ -191,7 +192,7 @@ void SceneParser::node_body(std::string_view what, SourceLocation opened_at, Sce
             node.material = material(entry);
             continue;
         }
-        in_->fail_expected("an object, blob, fractal, group, union, intersection, difference, instance, let, for, a transform "
+        in_->fail_expected("an object, blob, fractal, sweep, group, union, intersection, difference, instance, let, for, a transform "
                            "(translate, rotate, scale, shear, matrix), material or '}'");
     }
 }

@@ -15,9 +15,9 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 17> statement_names{
+constexpr std::array<std::string_view, 18> statement_names{
     "image", "camera", "light",        "background", "ambient",  "let",   "include", "object", "blob", "fractal",
-    "group", "union",  "intersection", "difference", "instance", "shape", "for"};
+    "sweep", "group",  "union",        "intersection", "difference", "instance", "shape", "for"};
 constexpr std::array<std::string_view, 5> image_keys{"width", "height", "spp", "antialias", "reflection_depth"};
 constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};
 constexpr std::array<std::string_view, 4> light_keys{"from", "direction", "color", "shadows"};

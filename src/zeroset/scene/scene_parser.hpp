@@ -133,6 +133,11 @@ private:
     struct BlobReading;
     SceneNodePtr blob(const Token& keyword);
     SceneNodePtr fractal(const Token& keyword);
+    // sweep_statement.cpp: swept spheres.
+    struct SweepReading;
+    SceneNodePtr sweep(const Token& keyword);
+    /// Reads one entry of a sweep's body into `reading`; false at none.
+    bool sweep_entry(SweepReading& reading);
     /// Reads one entry of a blob's body into `reading`; false at none.
     bool blob_entry(BlobReading& reading);
     BlobComponent blob_component(const Token& keyword, BlobKernel kernel);
