@@ -13,6 +13,7 @@
 #include "options.hpp"
 #include "progress_bar.hpp"
 #include "ray_options.hpp"
+#include "scene_input.hpp"
 #include "zeroset/io/image_writer.hpp"
 #include "zeroset/render/renderer.hpp"
 #include "zeroset/scene/load_scene.hpp"
@@ -27,7 +28,8 @@ constexpr int max_frames = 100000;
 std::string render_usage() {
     return R"(Usage: zeroset render [SCENE] [options]
 
-Renders SCENE (a .zs file) to an image. Without SCENE, renders the built-in
+Renders SCENE (a .zs file, or a POV-Ray .pov scene: docs/povray.md) to an
+image. Without SCENE, renders the built-in
 default scene: the survey's Figure 1, two unit spheres at (±1.2, 0, 0)
 blended as Blinn's blobs, h = 1 − e^(−f) − e^(−g) (eq. 12), over a floor
 (the text of scenes/hart1993/blinn_blobs.zs).
@@ -64,7 +66,7 @@ Options:
   --frames N          an animation: N frames with `clock` running from 0 to 1,
                       written as OUT_0000.png, OUT_0001.png, … (OUT's name with
                       the frame number before its extension)
-  -q, --quiet         no progress bar and no summary line
+)" + scene_input_help() + R"(  -q, --quiet         no progress bar and no summary line
   -h, --help          this text
 
 A progress bar is drawn on stderr when it is a terminal; a one-line summary
@@ -111,8 +113,8 @@ std::vector<double> frame_clocks(const Options& options) {
     return clocks;
 }
 
-Scene load(const std::optional<std::filesystem::path>& scene_file, double clock) {
-    return scene_file ? load_scene(*scene_file, {}, clock) : default_scene();
+Scene load(const std::optional<std::filesystem::path>& scene_file, const Options& options, double clock, bool quiet) {
+    return scene_file ? load_scene_file(*scene_file, options, clock, quiet) : default_scene();
 }
 
 }  // namespace
@@ -121,6 +123,7 @@ int render_command(const std::vector<std::string>& args) {
     std::vector<std::string> valued = {"--width",     "--height",    "--spp",    "--antialias", "--threads",         "--method",
                                        "--solver",    "--normals",   "--partition", "--max-evaluations", "--frames",
                                        "--clock"};
+    valued.insert(valued.end(), scene_input_options.begin(), scene_input_options.end());
     valued.insert(valued.end(), image_output_options.begin(), image_output_options.end());
     const Options options(args, valued, {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
@@ -142,7 +145,7 @@ int render_command(const std::vector<std::string>& args) {
     for (std::size_t frame = 0; frame < clocks.size(); ++frame) {
         const int number = clocks.size() > 1 ? static_cast<int>(frame) : -1;
         if (frame > 0) output.check(number);
-        const Scene scene = load(scene_file, clocks[frame]);
+        const Scene scene = load(scene_file, options, clocks[frame], quiet || frame > 0);
         RenderSettings settings = settings_for(options, scene, layers);
         ProgressBar bar;
         if (!quiet && bar.enabled()) {

@@ -136,7 +136,7 @@ TEST(SceneParser, UnknownAndRepeatedKeys) {
               "(expected color, ambient, diffuse, specular, shininess or reflection); did you mean 'color'?");
     EXPECT_EQ(error_of("object { surface x  methd interval }"),
               "scene.zs:1:21: unknown key 'methd' in the object block (expected surface, bounds, method, "
-              "solver, normals, partition, material, cut, translate, rotate, scale, shear or matrix); did you mean 'method'?");
+              "solver, normals, partition, material, cut, open, clip, translate, rotate, scale, shear or matrix); did you mean 'method'?");
     EXPECT_EQ(error_of("object { surface x  method intervall }"),
               "scene.zs:1:28: unknown method 'intervall' (expected auto, sphere, interval, lg, polynomial, newton, "
               "regula_falsi or bisection); did you mean 'interval'?");

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "zeroset/accel/spans_from_roots.hpp"
@@ -43,7 +44,9 @@ LeafScratch::LeafScratch(const ImplicitLeaf& leaf)
     : h(leaf.tape()),
       finder(make_root_finder(leaf.method(), leaf.tape(), leaf.settings())),
       gradient(leaf.tape()),
-      value(leaf.tape()) {}
+      value(leaf.tape()) {
+    if (leaf.clip_tape()) clip.emplace(*leaf.clip_tape());
+}
 
 Partition resolve_partition(Partition asked, Method method, const Tape& tape) {
     const bool bounds_cells = method == Method::Interval || method == Method::Lg || method == Method::Sphere;
@@ -62,15 +65,37 @@ int octree_depth_for(int footprint_pixels) {
     return std::clamp(depth, 2, 6);
 }
 
+namespace {
+
+/// An open object's bounds narrowed to its clip's solid: nothing is drawn
+/// where the clip is positive, so the box that interval analysis proves
+/// holds the clip's solid holds all that is drawn. Tight bounds matter: the
+/// object's size sets its tolerances and its shadow rays' offset.
+LeafDescription narrowed(LeafDescription d) {
+    if (!d.clip || !d.open || d.bounds.kind == Bounds::Kind::None) return d;
+    const Tape clip(*d.clip);
+    const Box3 given = d.bounds.enclosing_box();
+    const Box3 box = overlap(given, SearchRegion(clip, d.bounds).box());
+    const auto volume = [](const Box3& b) { return b.size().x * b.size().y * b.size().z; };
+    if (box.valid() && volume(box) < volume(given)) d.bounds = Bounds::make_box(box);
+    return d;
+}
+
+}  // namespace
+
 ImplicitLeaf::ImplicitLeaf(std::size_t id, LeafDescription description)
     : id_(id),
-      description_(std::move(description)),
+      description_(narrowed(std::move(description))),
       tape_(description_.surface),
       region_(tape_, description_.bounds),
       method_(resolve_method(description_.method, tape_)),
       settings_(settings_for_scale(region_.scale())),
       partition_(resolve_partition(description_.partition, method_, tape_)) {
     settings_.polynomial_solver = description_.solver;
+    if (description_.clip) {
+        if (!description_.open) throw std::invalid_argument("a clip needs an open object (open on)");
+        clip_tape_.emplace(*description_.clip);
+    }
     (void)make_root_finder(method_, tape_, settings_);  // throws here, not in a render thread
     if (partition_ != Partition::None) {
         OctreeSettings octree;
@@ -139,6 +164,22 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
     LeafScratch& leaf = scratch_for(scratch);
     const std::uint64_t nans = scratch.counters.nan_evaluations;
     leaf.h.set_ray(ray);
+    if (description_.open) {  // a sheet: the first root, wherever the ray starts
+        leaf.roots.clear();
+        if (all_hits(leaf, *span, scratch) == HitStatus::Failed) ++scratch.counters.failed_queries;
+        note_nan(leaf, nans, scratch);
+        std::sort(leaf.roots.begin(), leaf.roots.end());
+        for (const double t : leaf.roots) {
+            if (t < span->t0 || t > span->t1) continue;
+            if (leaf.clip) {  // clipped away here?
+                const Vec3d p = ray.at(t);
+                ++scratch.counters.point_evaluations;
+                if ((*leaf.clip)(p.x, p.y, p.z) > 0.0) continue;
+            }
+            return Hit{t, surface_at(ray, t, BoundaryKind::Surface)};
+        }
+        return std::nullopt;
+    }
     const HitResult hit =
         octree_ ? first_hit_in_cells(leaf, *span, scratch) : leaf.finder->first_hit(leaf.h, *span, scratch.counters);
     note_nan(leaf, nans, scratch);

@@ -49,6 +49,15 @@ struct LeafDescription {
     int footprint_pixels = 0;
     /// Told how the octree's build goes (OctreeSettings::on_progress).
     std::function<void(int, int)> on_octree_progress;
+    /// The object is its surface alone, a sheet (POV-Ray's open isosurfaces
+    /// and clipped surfaces): a ray's first hit is the first root of f in
+    /// the bounds, never where the bounds cut the solid or where the ray
+    /// starts inside it. Its spans (for CSG) are still those of its solid.
+    bool open = false;
+    /// An open object's clipping (POV-Ray's clipped_by): where this
+    /// expression of the object's own coordinates is positive, the surface
+    /// is not drawn.
+    std::optional<Expr> clip;
 };
 
 /// Auto → Lipschitz for the methods that bound f over cells (interval, LG,
@@ -68,6 +77,7 @@ struct LeafScratch {
     std::unique_ptr<RootFinder> finder;
     Evaluator<Dual<double>> gradient;
     Evaluator<double> value;
+    std::optional<Evaluator<double>> clip;  // the clip's, when the leaf has one
     std::vector<double> roots;
 };
 
@@ -94,6 +104,8 @@ public:
     [[nodiscard]] const std::string& name() const override { return description_.name; }
     [[nodiscard]] Method method() const { return method_; }
     [[nodiscard]] const Tape& tape() const { return tape_; }
+    /// The clip's tape (LeafDescription::clip), if there is one.
+    [[nodiscard]] const std::optional<Tape>& clip_tape() const { return clip_tape_; }
     [[nodiscard]] const RootFinderSettings& settings() const { return settings_; }
     [[nodiscard]] const LeafDescription& description() const { return description_; }
     [[nodiscard]] Partition partition() const { return partition_; }
@@ -126,6 +138,7 @@ private:
     RootFinderSettings settings_;
     Partition partition_;
     std::optional<Octree> octree_;
+    std::optional<Tape> clip_tape_;
 };
 
 }  // namespace zeroset

@@ -218,6 +218,8 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             d.solver = overrides_.solver.value_or(o.solver);
             d.normals = overrides_.normals.value_or(o.normals);
             d.partition = overrides_.partition.value_or(o.partition);
+            d.open = o.open;
+            d.clip = o.clip;
             if (const auto f = footprints_.find(node.get()); f != footprints_.end()) d.footprint_pixels = f->second;
             d.on_octree_progress = overrides_.on_progress;
             d.material = around;
@@ -228,7 +230,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
                     ++planes_;
                 } else {
                     auto leaf = std::make_shared<const ImplicitLeaf>(leaves_.size(), std::move(d));
-                    if (!o.cut_by_bounds) warn_of_cut(*node, name, leaf->tape());
+                    if (!o.cut_by_bounds && !o.open) warn_of_cut(*node, name, leaf->tape());
                     leaves_.push_back(leaf.get());
                     primitive = std::move(leaf);
                 }

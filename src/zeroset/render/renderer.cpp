@@ -269,7 +269,8 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     stats.methods = prepared.method_counts();
     stats.partitions = prepared.partition_summary();
     stats.blobs = prepared.blob_summary();
-    stats.warnings = prepared.warnings();
+    stats.warnings = scene.warnings;
+    stats.warnings.insert(stats.warnings.end(), prepared.warnings().begin(), prepared.warnings().end());
     return result;
 }
 

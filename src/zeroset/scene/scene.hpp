@@ -91,6 +91,12 @@ struct Object {
     /// The bounds may cut through the solid on purpose (a cut-away): no
     /// warning when they do (trace/bounds_cut.hpp).
     bool cut_by_bounds = false;
+    /// The object is its surface alone, a sheet with no inside: where the
+    /// bounds cut it, it is open (LeafDescription::open).
+    bool open = false;
+    /// An open object is not drawn where this expression is positive
+    /// (LeafDescription::clip): POV-Ray's clipped_by.
+    std::optional<Expr> clip;
 };
 
 /// The object's f: its surface, or a blob's field as an expression. Throws
@@ -147,6 +153,10 @@ struct Scene {
     Vec3d ambient{1.0, 1.0, 1.0};        // ambient light colour (scaled by Material::ambient)
     ImageSettings image;
     std::vector<SceneNodePtr> nodes;  // the top level
+    /// What the reader drew differently from what the file asks, located,
+    /// e.g. a POV-Ray import's "scene.pov:12:3: … is not supported; rendered
+    /// as …"; the render's warnings start with these.
+    std::vector<std::string> warnings;
 };
 
 /// One placement of an object in the scene: its node, the map from its

@@ -16,8 +16,8 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 8> object_keys{"surface", "bounds", "method", "solver", "normals", "partition",
-                                                      "material", "cut"};
+constexpr std::array<std::string_view, 10> object_keys{"surface",   "bounds",   "method", "solver", "normals",
+                                                       "partition", "material", "cut",    "open",   "clip"};
 constexpr std::array<std::string_view, 9> node_keywords{"object",   "group", "union",   "intersection", "difference",
                                                         "instance", "blob",  "fractal", "sweep"};
 
@@ -91,6 +91,7 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
     node->defined_at = format_location(in_->file_name(), keyword.where);
     Object& object = node->object;
     bool has_surface = false;
+    std::optional<SourceLocation> clip_at;
     SourceLocation surface_at{};
     std::vector<std::string_view> keys(object_keys.begin(), object_keys.end());
     keys.insert(keys.end(), transform_keys.begin(), transform_keys.end());
@@ -121,12 +122,20 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
                 object.partition = partition();
             } else if (key.text == "cut") {
                 object.cut_by_bounds = on_off("cut");
+            } else if (key.text == "open") {
+                object.open = on_off("open");
+            } else if (key.text == "clip") {
+                const auto [clip, where] = value();
+                if (clip.is_vector()) in_->fail(where, "the clip must be a number (an expression in x, y, z), but found a vector");
+                object.clip = clip.number();
+                clip_at = where;
             } else {
                 node->material = material(key);
             }
         },
         transform_keys);
     if (!has_surface) in_->fail(keyword.where, "an object needs a surface");
+    if (object.clip && !object.open) in_->fail(*clip_at, "a clip is for open objects: add open on");
     if (vanishes_throughout(object.surface, object.bounds))
         in_->fail(surface_at, "the surface is 0 at every point tried in its bounds (" +
                                   object.surface.to_string() +
