@@ -1,8 +1,7 @@
 # A trefoil knot: a sphere swept along a closed Catmull–Rom spline through
 # 48 points of (sin u + 2 sin 2u, cos u − 2 cos 2u, −sin 3u), the swept
 # spheres of van Wijk (1984; the survey's §3.4), each of the 48 cubic
-# pieces traced exactly by Sturm's method on its degree-10 polynomial
-# (docs/sweeps.md).
+# pieces traced by the roots of its degree-10 polynomial (docs/sweeps.md).
 #
 #   zeroset render scenes/sweeps/trefoil.zs -o trefoil.png
 

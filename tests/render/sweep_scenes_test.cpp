@@ -50,23 +50,29 @@ TEST(SweepScenes, ALinearSweepCoversWhatItsCapsuleCovers) {
     EXPECT_EQ(differ, 0);
 }
 
-TEST(SweepScenes, SturmAndDescartesDrawTheSameImage) {
-    Scene scene = load_scene(ZEROSET_SOURCE_DIR "/scenes/sweeps/trefoil.zs");
-    RenderSettings settings;
-    settings.width = 96;
-    settings.height = 72;
-    settings.solver = PolynomialSolver::Sturm;
-    const RenderResult sturm = render(scene, settings);
-    settings.solver = PolynomialSolver::Descartes;
-    const RenderResult descartes = render(scene, settings);
-    ASSERT_EQ(sturm.image.pixels.size(), descartes.image.pixels.size());
-    float largest = 0.0f;
-    for (std::size_t i = 0; i < sturm.image.pixels.size(); ++i)
-        largest = std::max(largest, length(sturm.image.pixels[i] - descartes.image.pixels[i]));
-    EXPECT_LT(largest, 1e-5f);
-    // A solver that does not isolate every root is refused.
-    settings.solver = PolynomialSolver::Fast;
-    EXPECT_THROW(render(scene, settings), RenderError);
+/// Pixels whose coverage differs between two scenes' renders at 160×120.
+int differing_pixels(const std::string& a, const std::string& b) {
+    const std::string view = "camera { from (0.3, 0.8, -6) at (0, 0, 0) fov 40 }\n";
+    const std::vector<bool> x = coverage(parse_scene(view + a, "a.zs", "."), 160, 120);
+    const std::vector<bool> y = coverage(parse_scene(view + b, "b.zs", "."), 160, 120);
+    EXPECT_GT(covered(x), 0.02);
+    int differ = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) differ += x[i] != y[i];
+    return differ;
+}
+
+TEST(SweepScenes, StraightSplinesAndRadiusStepsCoverTheirCapsules) {
+    // A Catmull–Rom through collinear, unevenly spaced points runs straight.
+    EXPECT_EQ(differing_pixels("sweep { radius 0.3 point (-3.1, 0.1, 0) point (-1.3, 0.1, 0) point (0.7, 0.1, 0) point (2.9, 0.1, 0) }",
+                               "object { surface sd_capsule((-1.3, 0.1, 0), (0.7, 0.1, 0), 0.3) "
+                               "bounds box((-1.7, -0.3, -0.4), (1.1, 0.5, 0.4)) method interval }"),
+              0);
+    // A repeated point steps the radius: a piece of length 0 between two capsules.
+    EXPECT_EQ(differing_pixels("sweep { curve linear point (-1.5, 0, 0) radius 0.2 point (0, 0, 0) radius 0.2 "
+                               "point (0, 0, 0) radius 0.6 point (1.5, 0, 0) radius 0.6 }",
+                               "object { surface min(sd_capsule((-1.5, 0, 0), (0, 0, 0), 0.2), sd_capsule((0, 0, 0), (1.5, 0, 0), 0.6)) "
+                               "bounds box((-2, -0.7, -0.7), (2.2, 0.7, 0.7)) method interval }"),
+              0);
 }
 
 TEST(SweepScenes, AMethodOtherThanItsOwnIsRefused) {

@@ -28,12 +28,6 @@ TEST(SweepStatement, ALinearSweepIsOneSegmentPerPairOfPoints) {
     EXPECT_DOUBLE_EQ(box.lo.x, -0.5);
     EXPECT_DOUBLE_EQ(box.hi.y, 2.5);  // the first segment's box grows by its larger radius
     EXPECT_THROW(surface_of(placed_objects(scene)[0].object()), std::invalid_argument);
-    // Descartes by default; Sturm on request.
-    EXPECT_EQ(placed_objects(scene)[0].object().solver, PolynomialSolver::Descartes);
-    EXPECT_EQ(placed_objects(parse("sweep { solver sturm curve linear radius 1 point (0, 0, 0) point (1, 0, 0) }"))[0]
-                  .object()
-                  .solver,
-              PolynomialSolver::Sturm);
 }
 
 TEST(SweepStatement, SplinesAreCutIntoCubicBezierPieces) {
@@ -93,9 +87,8 @@ TEST(SweepStatement, GivesLocatedErrors) {
               "scene.zs:1:22: sweep: a swept sphere's radius must not be 0 at both ends");
     EXPECT_EQ(error_of("sweep { curve linear closed on closed off }"),
               "scene.zs:1:32: 'closed' is already set in this sweep block (at line 1, column 22)");
-    EXPECT_EQ(error_of("sweep { solver fast }"), "scene.zs:1:16: a sweep's solver must isolate every root: sturm or descartes");
     EXPECT_NE(error_of("sweep { curve spiral }").find("scene.zs:1:15"), std::string::npos);
-    EXPECT_NE(error_of("sweep { colour (1, 0, 0) }").find("scene.zs:1:9: expected a key (curve, closed, radius, point, solver or material)"),
+    EXPECT_NE(error_of("sweep { colour (1, 0, 0) }").find("scene.zs:1:9: expected a key (curve, closed, radius, point or material)"),
               std::string::npos)
         << error_of("sweep { colour (1, 0, 0) }");
 }

@@ -3,26 +3,21 @@
 #include "zeroset/accel/swept_sphere.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 #include "zeroset/accel/trace_scratch.hpp"
 
 namespace zeroset {
 
-SweptSphere::SweptSphere(std::string name, const SweptSegment& segment, MaterialId material, PolynomialSolver solver)
-    : name_(std::move(name)), segment_(segment), material_(material), solver_(solver), bounds_(segment.bounds()) {
-    if (!isolates_every_root(solver))
-        throw std::invalid_argument("a sweep's polynomials need a solver that isolates every root (sturm or descartes), not " +
-                                    std::string(polynomial_solver_name(solver)));
-}
+SweptSphere::SweptSphere(std::string name, const SweptSegment& segment, MaterialId material)
+    : name_(std::move(name)), segment_(segment), material_(material), bounds_(segment.bounds()) {}
 
 Hit SweptSphere::boundary(const Ray& ray, double t, BoundaryKind kind) const {
     return {t, leaf_surface(*this, kind, material_, ray.at(t), bounds_.diagonal())};
 }
 
 SweepSpans SweptSphere::exact_spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
-    if (!bounds_.clip(ray, t_min, t_max)) return {};
-    SweepSpans found = sweep_spans(segment_, ray, solver_);
+    if (!(t_min <= t_max) || !bounds_.clip(ray, t_min, t_max)) return {};
+    SweepSpans found = sweep_spans(segment_, ray);
     scratch.counters.point_evaluations += static_cast<std::uint64_t>(found.evaluations);
     return found;
 }

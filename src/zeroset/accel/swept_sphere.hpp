@@ -1,8 +1,8 @@
 // SweptSphere: one segment of a sweep — a sphere swept along a Bézier curve
 // with a linearly varying radius (van Wijk 1984, survey §3.4) — as a leaf
 // primitive. Its spans along a ray are exact (trace/swept_sphere.hpp): the
-// roots of two polynomials in the curve parameter, by Sturm's method, with
-// no step size or Lipschitz bound. A sweep of several segments is a group
+// roots of polynomials in the curve parameter, by Descartes' rule of signs,
+// with no step size or Lipschitz bound. A sweep of several segments is a group
 // of these, so its BVH tests a ray only against the segments it comes near,
 // and the union of their spans joins them.
 //
@@ -20,9 +20,7 @@ namespace zeroset {
 
 class SweptSphere final : public LeafPrimitive {
 public:
-    /// `solver` must isolate every root (sturm or descartes; std::invalid_argument if not).
-    SweptSphere(std::string name, const SweptSegment& segment, MaterialId material,
-                PolynomialSolver solver = PolynomialSolver::Descartes);
+    SweptSphere(std::string name, const SweptSegment& segment, MaterialId material);
 
     [[nodiscard]] Box3 bounds() const override { return bounds_; }
     std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
@@ -40,7 +38,6 @@ private:
     std::string name_;
     SweptSegment segment_;
     MaterialId material_;
-    PolynomialSolver solver_;
     Box3 bounds_;
 };
 

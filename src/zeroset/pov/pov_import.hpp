@@ -8,6 +8,7 @@
 // the scene language's are (file:line:column).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -27,6 +28,8 @@ struct PovOptions {
     double clock = 0.0;
     /// Folders searched for #include after the scene's own (POV-Ray's +L).
     std::vector<std::filesystem::path> include_paths;
+    /// #while and #for iterations in all, past which the scene is refused.
+    std::uint64_t max_loop_iterations = 10'000'000;
 };
 
 /// A scene read from POV-Ray's language. What of it zeroset draws

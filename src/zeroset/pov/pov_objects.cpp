@@ -799,13 +799,8 @@ std::shared_ptr<PovObject> PovParser::csg(const PovToken& keyword, ObjectBuilder
         meet->children = std::move(kept);
         base = meet;
     }
-    if (removed.empty()) {
-        if (base->kind == SceneNode::Kind::Intersection) {
-            o->node = base;
-            return o;
-        }
-        node->kind = SceneNode::Kind::Group;
-        node->children = {base};
+    if (removed.empty()) {  // the intersection, or its one member left
+        o->node = base;
         return o;
     }
     node->kind = SceneNode::Kind::Difference;
@@ -838,7 +833,19 @@ std::shared_ptr<PovObject> PovParser::finish_object(ObjectBuilder& b, std::share
                                              "closed (an intersection with the clipping objects)");
         }
     }
-    if (b.bounded_by) note(b.bounded_by->where, "bounded_by is not needed: zeroset bounds objects itself");
+    if (b.bounded_by) {
+        // On an open surface (a polynomial's sheet) POV-Ray's bounded_by cuts
+        // it: there it is the object's bounds, when it fits in them.
+        std::optional<Bounds> region;
+        if (node->kind == SceneNode::Kind::Object && node->object.open && !b.bounded_by->object->inverse)
+            if (const auto into_leaf = node->transform.inverse())
+                region = clip_region(*b.bounded_by->object, *into_leaf * b.bounded_by->to_local, b.bounded_by->where);
+        const Box3 now = node->kind == SceneNode::Kind::Object ? node->object.bounds.enclosing_box() : Box3{};
+        if (region && now.contains(region->enclosing_box().lo) && now.contains(region->enclosing_box().hi))
+            node->object.bounds = *region;
+        else
+            note(b.bounded_by->where, "bounded_by is not needed: zeroset bounds objects itself");
+    }
     node->transform = b.transform * node->transform;
     if (!node->transform.is_finite()) fail(b.keyword, "the object's transforms overflow");
     if (b.texture && !node->material) {

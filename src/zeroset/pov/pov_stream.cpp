@@ -16,8 +16,6 @@ namespace {
 constexpr int max_include_depth = 64;
 /// Macros calling macros deeper than this are an error.
 constexpr int max_macro_depth = 200;
-/// #while and #for iterations in all, past which the scene is refused.
-constexpr std::uint64_t max_loop_iterations = 10'000'000;
 
 bool opens_block(const PovToken& t) {
     static constexpr std::array<std::string_view, 7> openers{"if", "ifdef", "ifndef", "while", "for", "switch", "macro"};
@@ -164,9 +162,13 @@ void PovParser::assign(const std::string& name, PovValue value, bool local) {
 }
 
 bool PovParser::condition() {
+    // '(' expression ')', read so that nothing past the ')' is looked at:
+    // a directive right after it must not be carried out before this one.
+    expect_symbol("(", "before the condition");
     const PovToken at = peek();
     const PovValue v = expression();
     if (!v.is_number()) fail(at, "a condition must be a number (0 is false), not " + kind_name(v.kind));
+    expect_symbol(")", "after the condition");
     return v.v[0] != 0.0;
 }
 
@@ -379,7 +381,9 @@ void PovParser::for_loop(const PovToken& keyword) {
 
 void PovParser::switch_block(const PovToken& keyword) {
     (void)keyword;
+    expect_symbol("(", "after #switch");
     const double value = number("the #switch value");
+    expect_symbol(")", "after the #switch value");
     Block b{Block::Kind::Switch, frames_.size() - 1};
     b.switch_value = value;
     for (;;) {  // to the first case that holds
@@ -402,8 +406,8 @@ void PovParser::switch_block(const PovToken& keyword) {
 void PovParser::end_of_block(const PovToken& keyword) {
     if (blocks_.empty() || blocks_.back().frame != frames_.size() - 1) fail(keyword, "#end without an open block");
     Block& b = blocks_.back();
-    if (++loop_iterations_ > max_loop_iterations && (b.kind == Block::Kind::While || b.kind == Block::Kind::For))
-        fail(keyword, "the scene's loops ran more than 10 000 000 times");
+    if ((b.kind == Block::Kind::While || b.kind == Block::Kind::For) && ++loop_iterations_ > options_.max_loop_iterations)
+        fail(keyword, "the scene's loops ran more than " + std::to_string(options_.max_loop_iterations) + " times");
     if (b.kind == Block::Kind::While) {
         frames_.back().pos = b.restart;
         if (!condition()) {

@@ -181,13 +181,9 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
                 if (method != Method::Auto && method != Method::Polynomial)
                     throw RenderError("object '" + name + "' is a sweep, traced exactly by its segments' polynomials: the " +
                                       std::string(method_name(method)) + " method needs an expression it does not have");
-                const PolynomialSolver solver = overrides_.solver.value_or(o.solver);
-                if (!isolates_every_root(solver))
-                    throw RenderError("object '" + name + "' is a sweep, whose polynomials need a solver that isolates "
-                                      "every root (sturm or descartes), not " + std::string(polynomial_solver_name(solver)));
                 std::vector<std::shared_ptr<const Primitive>> segments;
                 for (const SweptSegment& s : *o.sweep)
-                    segments.push_back(std::make_shared<const SweptSphere>(name, s, around, solver));
+                    segments.push_back(std::make_shared<const SweptSphere>(name, s, around));
                 around = no_material;
                 primitive = segments.size() == 1 ? segments.front() : std::make_shared<Group>(std::move(segments));
                 ++sweeps_;

@@ -16,7 +16,7 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 6> sweep_keys{"curve", "closed", "radius", "point", "solver", "material"};
+constexpr std::array<std::string_view, 5> sweep_keys{"curve", "closed", "radius", "point", "material"};
 
 }  // namespace
 
@@ -38,7 +38,6 @@ SceneNodePtr SceneParser::sweep(const Token& keyword) {
     node->kind = SceneNode::Kind::Object;
     if (in_->at(TokenKind::String)) node->name = in_->next().text;
     node->defined_at = format_location(in_->file_name(), keyword.where);
-    node->object.solver = PolynomialSolver::Descartes;
     SweepReading reading{*node, SweepCurve::CatmullRom, false, {}, {}, {}, {}, {}};
     in_->expect(TokenKind::LeftBrace);
     while (!in_->accept(TokenKind::RightBrace)) {
@@ -110,12 +109,6 @@ bool SceneParser::sweep_entry(SweepReading& reading) {
         const auto [r, where] = number("the radius");
         if (!(r > 0.0)) in_->fail(where, "the sweep's radius must be positive");
         reading.radius = r;
-    } else if (word == "solver") {
-        const SourceLocation where = in_->peek().where;
-        const PolynomialSolver solver = polynomial_solver();
-        if (!isolates_every_root(solver))
-            in_->fail(where, "a sweep's solver must isolate every root: sturm or descartes");
-        reading.node.object.solver = solver;
     } else if (word == "point") {
         if (++objects_ > limits_.objects)
             in_->fail(entry.where, "the scene makes more than " + std::to_string(limits_.objects) + " objects and sweep points");

@@ -6,13 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "zeroset/math/polynomial.hpp"
 #include "zeroset/roots/bernstein.hpp"
 #include "zeroset/roots/descartes.hpp"
-#include "zeroset/roots/sturm.hpp"
 
 namespace zeroset {
 
@@ -42,7 +42,7 @@ std::array<Vec3d, 4> power_basis(int degree, const std::array<Vec3d, 4>& p) {
 /// x[axis] − c(s)[axis], a polynomial in s.
 Polynomial offset_from_curve(const SweptSegment& segment, const Vec3d& x, int axis) {
     std::array<double, 4> k{};
-    const int n = segment.degree();
+    const int n = segment.power_degree();
     for (int i = 0; i <= n; ++i) k[i] = -segment.power()[i][axis];
     k[0] += x[axis];
     return Polynomial::from_coefficients(std::span<const double>(k.data(), static_cast<std::size_t>(n + 1)));
@@ -53,10 +53,9 @@ Polynomial radius_polynomial(const SweptSegment& segment) {
     return Polynomial::line(segment.radius_from(), segment.radius_to() - segment.radius_from());
 }
 
-/// The real roots of c in [t0, t1] by an isolating solver.
-PolynomialRoots isolated_roots(PolynomialSolver solver, const Polynomial& c, double t0, double t1, std::span<double> out) {
-    return solver == PolynomialSolver::Sturm ? sturm_roots(c.coefficients(), t0, t1, out)
-                                             : descartes_roots(c.coefficients(), t0, t1, out);
+/// The real roots of c in [t0, t1], isolated by Descartes' rule of signs.
+PolynomialRoots isolated_roots(const Polynomial& c, double t0, double t1, std::span<double> out) {
+    return descartes_roots(c.coefficients(), t0, t1, out);
 }
 
 /// Where the ray, o + t·d with A = d·d, meets the sphere at s.
@@ -75,11 +74,79 @@ Chord chord_at(const SweptSegment& segment, const Ray& ray, double a, double s) 
     const double d = b * b - a * c;
     // The stable pair of roots of a·t² + 2b·t + c: q/a and c/q with q = −(b ± √D).
     const double noise = 8.0 * std::numeric_limits<double>::epsilon() * (b * b + a * (dot(w, w) + r * r));
-    const double q = -(b + std::copysign(std::sqrt(std::max(d, 0.0)), b));
-    if (q == 0.0) return {d, noise, 0.0, 0.0};  // b = D = 0, so c = 0: a touch at t = 0
-    const double t1 = q / a, t2 = c / q;
-    return {d, noise, std::min(t1, t2), std::max(t1, t2)};
+    // The plain formula: the ray is centred near the segment, so t is small
+    // and needs no stable form — which, at a clamped D with b ≈ 0, would
+    // divide rounding noise by rounding noise.
+    const double root = std::sqrt(std::max(d, 0.0));
+    return {d, noise, (-b - root) / a, (-b + root) / a};
 }
+
+/// The signs of t_in′ and t_out′ at s, as φ_in = 2 B′ t_in + C′ (t_in′ has
+/// its sign) and φ_out = 2 B′ t_out + C′ (t_out′ has the opposite sign);
+/// nothing where the ray misses the sphere at s.
+std::optional<std::array<double, 2>> turning(const SweptSegment& segment, const Ray& ray, double a, double s) {
+    const Chord ch = chord_at(segment, ray, a, s);
+    if (!(ch.discriminant > 0.0)) return std::nullopt;
+    const auto& k = segment.power();
+    Vec3d tangent{};  // c′(s)
+    for (int i = segment.power_degree(); i >= 1; --i) tangent = tangent * s + k[i] * static_cast<double>(i);
+    const Vec3d w = ray.origin - segment.center(s);
+    const double db = -dot(ray.dir, tangent);
+    const double dc = -2.0 * dot(w, tangent) - 2.0 * segment.radius(s) * (segment.radius_to() - segment.radius_from());
+    return std::array<double, 2>{2.0 * db * ch.t_in + dc, 2.0 * db * ch.t_out + dc};
+}
+
+/// The curve parameters where a stretch's span may end: its ends, roots and turns.
+struct Candidates {
+    static constexpr int capacity = 64;
+    std::array<double, capacity> s{};
+    int count = 0;
+
+    void add(double v) {
+        if (count < capacity) s[static_cast<std::size_t>(count++)] = v;
+    }
+    void add_roots(const Polynomial& p, double s0, double s1, int& evaluations) {
+        if (p.degree() < 1) return;
+        std::array<double, 12> roots{};
+        const PolynomialRoots r = isolated_roots(p, s0, s1, std::span<double>(roots));
+        evaluations += r.evaluations;
+        for (int i = 0; i < r.count; ++i) add(roots[static_cast<std::size_t>(i)]);
+    }
+    void sort() { sort_few(s.data(), count, [](double x, double y) { return x < y; }); }
+    /// Samples (u, v) for φ_in or φ_out turning from negative to positive,
+    /// and adds where each turns, bisected.
+    void add_turns(const SweptSegment& segment, const Ray& ray, double a, double u, double v, int& evaluations) {
+        constexpr int samples = 8;
+        for (int which = 0; which < 2; ++which) {
+            double previous_s = 0.0;
+            bool has_previous = false;
+            for (int j = 1; j <= samples; ++j) {
+                const double x = u + (v - u) * j / (samples + 1);
+                const auto phi = turning(segment, ray, a, x);
+                ++evaluations;
+                if (!phi) continue;
+                const double value = (*phi)[static_cast<std::size_t>(which)];
+                if (has_previous && value > 0.0) {
+                    // φ was negative at previous_s: bisect the turn.
+                    double lo = previous_s, hi = x;
+                    for (int step = 0; step < 60 && lo < hi; ++step) {
+                        const double mid = 0.5 * (lo + hi);
+                        if (mid <= lo || mid >= hi) break;
+                        const auto m = turning(segment, ray, a, mid);
+                        ++evaluations;
+                        if (!m) break;
+                        ((*m)[static_cast<std::size_t>(which)] > 0.0 ? hi : lo) = mid;
+                    }
+                    // A candidate must name a sphere the ray meets.
+                    const double turn = 0.5 * (lo + hi);
+                    if (chord_at(segment, ray, a, turn).discriminant >= 0.0) add(turn);
+                }
+                has_previous = value < 0.0;
+                previous_s = x;
+            }
+        }
+    }
+};
 
 /// A stretch [s0, s1] of s where D ≥ 0 (s0 = s1: the ray only touches).
 struct Stretch {
@@ -87,12 +154,12 @@ struct Stretch {
 };
 
 /// The stretches of [0, 1] where D ≥ 0, from D's roots there, in order.
-int stretches(const SweptSegment& segment, const Ray& ray, double a, const Polynomial& d_poly, PolynomialSolver solver,
+int stretches(const SweptSegment& segment, const Ray& ray, double a, const Polynomial& d_poly,
               std::array<Stretch, max_sweep_spans>& out, int& evaluations) {
     std::array<double, 8> roots{};
     int n_roots = 0;
     if (d_poly.degree() >= 1) {
-        const PolynomialRoots r = isolated_roots(solver, d_poly, 0.0, 1.0, std::span<double>(roots.data(), 6));
+        const PolynomialRoots r = isolated_roots(d_poly, 0.0, 1.0, std::span<double>(roots.data(), 6));
         evaluations += r.evaluations;
         n_roots = r.count;
     }
@@ -108,10 +175,10 @@ int stretches(const SweptSegment& segment, const Ray& ray, double a, const Polyn
         positive[i] = chord_at(segment, ray, a, 0.5 * (at[i] + at[i + 1])).discriminant > 0.0;
         ++evaluations;
     }
-    int count = 0;
+    std::array<Stretch, 16> all{};
+    int found = 0;
     const auto add = [&](double s0, double s1) {
-        if (count > 0 && out[count - 1].s1 >= s0) out[count - 1].s1 = std::max(out[count - 1].s1, s1);
-        else if (count < max_sweep_spans) out[count++] = {s0, s1};
+        if (found < static_cast<int>(all.size())) all[found++] = {s0, s1};
     };
     for (int i = 0; i + 1 < n; ++i)
         if (positive[i]) add(at[i], at[i + 1]);
@@ -125,7 +192,13 @@ int stretches(const SweptSegment& segment, const Ray& ray, double a, const Polyn
         ++evaluations;
         if (touch.discriminant >= -touch.noise) add(at[i], at[i]);
     }
-    sort_few(out.data(), count, [](const Stretch& x, const Stretch& y) { return x.s0 < y.s0; });
+    // In order of s, stretches that meet merged.
+    sort_few(all.data(), found, [](const Stretch& x, const Stretch& y) { return x.s0 < y.s0; });
+    int count = 0;
+    for (int i = 0; i < found; ++i) {
+        if (count > 0 && out[count - 1].s1 >= all[i].s0) out[count - 1].s1 = std::max(out[count - 1].s1, all[i].s1);
+        else if (count < max_sweep_spans) out[count++] = all[i];
+    }
     return count;
 }
 
@@ -146,11 +219,19 @@ SweptSegment::SweptSegment(int degree, const std::array<Vec3d, 4>& control, doub
         if (!(std::max(std::abs(box.lo[axis]), std::abs(box.hi[axis])) <= max_sweep_coordinate))
             throw std::invalid_argument("a swept segment must lie within 1e30 of the origin");
     power_ = power_basis(degree, control_);
+    // Leading terms at rounding level (a cubic whose control points lie
+    // evenly on a line) would make its polynomials' leading coefficients
+    // noise: they are dropped, which moves the curve by as little.
+    power_degree_ = degree;
+    double scale = 0.0;
+    for (int i = 1; i <= degree; ++i) scale = std::max(scale, length(power_[i]));
+    while (power_degree_ > 1 && length(power_[power_degree_]) <= 64.0 * std::numeric_limits<double>::epsilon() * scale)
+        power_[power_degree_--] = Vec3d{};
 }
 
 Vec3d SweptSegment::center(double s) const {
-    Vec3d c = power_[degree_];
-    for (int k = degree_ - 1; k >= 0; --k) c = c * s + power_[k];
+    Vec3d c = power_[power_degree_];
+    for (int k = power_degree_ - 1; k >= 0; --k) c = c * s + power_[k];
     return c;
 }
 
@@ -166,14 +247,7 @@ Box3 SweptSegment::bounds() const {
     return box;
 }
 
-bool isolates_every_root(PolynomialSolver solver) {
-    return solver == PolynomialSolver::Sturm || solver == PolynomialSolver::Descartes;
-}
-
-SweepSpans sweep_spans(const SweptSegment& segment, const Ray& in, PolynomialSolver solver) {
-    if (!isolates_every_root(solver))
-        throw std::invalid_argument("a sweep's polynomials need a solver that isolates every root (sturm or descartes), not " +
-                                    std::string(polynomial_solver_name(solver)));
+SweepSpans sweep_spans(const SweptSegment& segment, const Ray& in) {
     SweepSpans result;
     const double a = dot(in.dir, in.dir);
     if (!(a > 0.0) || !std::isfinite(a)) return result;
@@ -202,7 +276,7 @@ SweepSpans sweep_spans(const SweptSegment& segment, const Ray& in, PolynomialSol
         return result;
 
     std::array<Stretch, max_sweep_spans> found{};
-    const int n_stretches = stretches(segment, ray, a, d, solver, found, result.evaluations);
+    const int n_stretches = stretches(segment, ray, a, d, found, result.evaluations);
     if (n_stretches == 0) return result;
 
     // The stationary chords: P = A·C′² − 4·B·B′·C′ + 4·B′²·C.
@@ -210,28 +284,30 @@ SweepSpans sweep_spans(const SweptSegment& segment, const Ray& in, PolynomialSol
     const Polynomial p = pa * dc * dc - Polynomial(4.0) * b * db * dc + Polynomial(4.0) * db * db * c;
     for (int k = 0; k < n_stretches; ++k) {
         const Stretch& st = found[k];
-        // Only the roots of P within the stretch matter.
-        std::array<double, 12> stationary{};
-        int n_stationary = 0;
-        if (p.degree() >= 1 && st.s1 > st.s0) {
-            const PolynomialRoots roots = isolated_roots(solver, p, st.s0, st.s1, std::span<double>(stationary));
-            result.evaluations += roots.evaluations;
-            n_stationary = roots.count;
+        Candidates s;
+        s.add(st.s0);
+        s.add(st.s1);
+        if (st.s1 > st.s0) {
+            // P's roots in the stretch; and B′'s (or C′'s, where B′ ≡ 0),
+            // where φ_in and φ_out vanish together and P may not change sign.
+            s.add_roots(p, st.s0, st.s1, result.evaluations);
+            s.add_roots(db.degree() >= 1 || db[0] != 0.0 ? db : dc, st.s0, st.s1, result.evaluations);
+            s.sort();
+            // A safeguard for a root the solver lost to rounding (a thin
+            // tube's P is tiny against its coefficients): t_in's least and
+            // t_out's greatest lie where φ turns from negative to positive;
+            // each gap between candidates is sampled for such a turn.
+            const int before = s.count;
+            for (int i = 0; i + 1 < before; ++i) s.add_turns(segment, ray, a, s.s[i], s.s[i + 1], result.evaluations);
         }
         SweepSpan span{};
         bool first = true;
-        const auto consider = [&](double s) {
-            const Chord ch = chord_at(segment, ray, a, s);
+        for (int i = 0; i < s.count; ++i) {
+            const Chord ch = chord_at(segment, ray, a, s.s[i]);
             ++result.evaluations;
-            if (first || ch.t_in < span.t_enter) span.t_enter = ch.t_in, span.s_enter = s;
-            if (first || ch.t_out > span.t_exit) span.t_exit = ch.t_out, span.s_exit = s;
+            if (first || ch.t_in < span.t_enter) span.t_enter = ch.t_in, span.s_enter = s.s[i];
+            if (first || ch.t_out > span.t_exit) span.t_exit = ch.t_out, span.s_exit = s.s[i];
             first = false;
-        };
-        consider(st.s0);
-        if (st.s1 > st.s0) {
-            consider(st.s1);
-            for (int i = 0; i < n_stationary; ++i)
-                if (stationary[i] > st.s0 && stationary[i] < st.s1) consider(stationary[i]);
         }
         span.t_enter += t_c;
         span.t_exit += t_c;

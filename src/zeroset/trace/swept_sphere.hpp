@@ -17,28 +17,32 @@
 // eliminate t instead, which is easier since ∂g/∂s is linear in t:
 //   P(s) = A·C′² − 4·B·B′·C′ + 4·B′²·C = A·φ_in·φ_out,  φ = 2 B′ t + C′,
 // of degree 4n − 2 for a curve of degree n (10 for cubics), and isolate its
-// roots on [0, 1] by Sturm's method, as van Wijk did his, or by Descartes'
-// rule of signs in the Bernstein basis (as exact an isolation, and 2–3×
-// faster here: the default). A stationary t_in makes φ_in change sign, so P
-// does too: each extreme is a root the solver isolates. The stretches
-// themselves are bounded by the roots of D (degree 2n); a ray whose box
-// test passes but whose D has only negative Bernstein coefficients misses
-// every sphere and is rejected before any solving.
+// roots on [0, 1] by Descartes' rule of signs in the Bernstein basis (van
+// Wijk used Sturm sequences; zeroset's Sturm solver was measured to lose a
+// simple root of P here, so it is not offered). A stationary t_in makes φ_in
+// change sign, so P does too: each extreme is a root the solver isolates —
+// except where B′ = C′ = 0, where φ_in and φ_out vanish together and P
+// need not change sign, so B′'s roots (C′'s where B′ ≡ 0) are candidates
+// too. The stretches themselves are bounded by the roots of D (degree 2n);
+// a ray whose box test passes but whose D has only negative Bernstein
+// coefficients misses every sphere and is rejected before any solving.
 //
-// Every candidate s (stretch ends, roots of P) names a sphere the ray really
+// Every candidate s (stretch ends, roots) names a sphere the ray really
 // meets, so its chord lies inside the solid: a spurious candidate cannot
 // move an entry later or an exit earlier, and the true extremes are among
-// the candidates. The first hit is therefore exact up to rounding, with no
-// step size or tolerance to choose. A ray that only touches a sphere (a
-// double root of D, a graze of the tube) gives a span of length 0, which
-// counts as a hit, when D at the touch is 0 to within its rounding.
+// the candidates. As a safeguard for a root lost to rounding (a thin tube's
+// P is tiny against its coefficients), the gaps between candidates are
+// sampled for φ turning from negative to positive, and a turn found is
+// bisected into another candidate. The first hit needs no step size or
+// tolerance. A ray that only touches a sphere (a double root of D, a graze
+// of the tube) gives a span of length 0, which counts as a hit when D there
+// is 0 to within its rounding.
 #pragma once
 
 #include <array>
 
 #include "zeroset/math/box3.hpp"
 #include "zeroset/math/ray.hpp"
-#include "zeroset/trace/method.hpp"
 
 namespace zeroset {
 
@@ -67,11 +71,14 @@ public:
     /// their hull) grown by the larger radius.
     [[nodiscard]] Box3 bounds() const;
 
-    /// c(s) = Σ power[k]·sᵏ, k ≤ degree.
+    /// c(s) = Σ power[k]·sᵏ, k ≤ power_degree() ≤ degree() (leading terms at
+    /// rounding level dropped).
     [[nodiscard]] const std::array<Vec3d, 4>& power() const { return power_; }
+    [[nodiscard]] int power_degree() const { return power_degree_; }
 
 private:
     int degree_;
+    int power_degree_;
     std::array<Vec3d, 4> control_{};
     std::array<Vec3d, 4> power_{};
     double r0_, r1_;
@@ -97,14 +104,9 @@ struct SweepSpans {
     int evaluations = 0;
 };
 
-/// Whether `solver` isolates every real root, as sweep_spans needs: Sturm
-/// or Descartes.
-bool isolates_every_root(PolynomialSolver solver);
-
 /// The ray's spans inside the segment's solid over all t, sorted by
-/// t_enter, disjoint (spans that overlap are merged); the polynomials solved
-/// by `solver`, which must isolate every root (std::invalid_argument if not).
-SweepSpans sweep_spans(const SweptSegment& segment, const Ray& ray, PolynomialSolver solver = PolynomialSolver::Descartes);
+/// t_enter, disjoint (spans that overlap are merged).
+SweepSpans sweep_spans(const SweptSegment& segment, const Ray& ray);
 
 /// The s of the sphere that a point on the surface lies on: the s in
 /// [0, 1] where |x − c(s)|² − r(s)² is least (0 on the surface). The outward

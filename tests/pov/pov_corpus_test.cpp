@@ -1,0 +1,48 @@
+// POV-Ray's own sample scenes (Debian's povray-examples: objects/quartic/,
+// objects/blob*.pov, objects/isosurfaces.pov), where the package is
+// installed: every one imports — a SceneError would be a scene zeroset
+// cannot draw — and every warning is located. bench/compare_povray_corpus.py
+// compares the images with POV-Ray's.
+#include <filesystem>
+#include <regex>
+
+#include "pov/pov_test_support.hpp"
+
+namespace zeroset::pov::test {
+namespace {
+
+std::vector<std::filesystem::path> corpus() {
+    const std::filesystem::path objects = "/usr/share/doc/povray/examples/objects";
+    std::vector<std::filesystem::path> scenes;
+    std::error_code error;
+    if (!std::filesystem::is_directory(objects / "quartic", error)) return scenes;
+    for (const auto& e : std::filesystem::directory_iterator(objects / "quartic"))
+        if (e.path().extension() == ".pov") scenes.push_back(e.path());
+    for (const auto& e : std::filesystem::directory_iterator(objects)) {
+        const std::string name = e.path().filename().string();
+        if ((name.starts_with("blob") || name == "isosurfaces.pov") && e.path().extension() == ".pov") scenes.push_back(e.path());
+    }
+    std::sort(scenes.begin(), scenes.end());
+    return scenes;
+}
+
+TEST(PovCorpus, EverySampleSceneImportsWithLocatedMessages) {
+    const auto scenes = corpus();
+    if (scenes.empty()) GTEST_SKIP() << "povray-examples is not installed";
+    EXPECT_EQ(scenes.size(), 23U);  // 18 quartics, 4 blobs, the isosurfaces
+    const std::regex located(R"(^[^:]+:\d+:\d+: .+)");
+    for (const auto& scene : scenes) {
+        try {
+            const PovImport imported = read_pov_scene(scene);
+            EXPECT_FALSE(imported.scene.nodes.empty()) << scene;
+            EXPECT_FALSE(imported.scene.lights.empty()) << scene;
+            for (const std::string& w : imported.scene.warnings) EXPECT_TRUE(std::regex_match(w, located)) << w;
+            for (const std::string& n : imported.notes) EXPECT_TRUE(std::regex_match(n, located)) << n;
+        } catch (const SceneError& e) {
+            ADD_FAILURE() << e.what();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace zeroset::pov::test
