@@ -12,5 +12,6 @@ int basins_command(const std::vector<std::string>& args);
 int ray_command(const std::vector<std::string>& args);
 int slice_command(const std::vector<std::string>& args);
 int mesh_command(const std::vector<std::string>& args);
+int import_command(const std::vector<std::string>& args);
 
 }  // namespace zeroset::cli

@@ -20,12 +20,14 @@ Usage:
   zeroset ray [SCENE] [options]      every intersection method on one ray: hits, evaluations, a plot of H(t)
   zeroset slice INPUT [options]      f on a plane: its sign, or its value with the zero contour
   zeroset mesh INPUT -o OUT.stl      a triangle mesh of the surface (.stl, .obj or .ply)
+  zeroset import SCENE.pov           a POV-Ray scene written as a zeroset scene (.zs)
   zeroset --help                     this text
   zeroset COMMAND --help             a command's options
   zeroset --version                  the version
 
 A surface is the zero set of f(x, y, z), negative inside. Scenes are text
-files; see docs/scene-language.md.
+files; see docs/scene-language.md. Every command that reads a scene also
+reads POV-Ray's (.pov; docs/povray.md).
 )";
 
 }  // namespace
@@ -48,7 +50,8 @@ int main(int argc, char** argv) {
         if (args[0] == "ray") return zeroset::cli::ray_command(rest);
         if (args[0] == "slice") return zeroset::cli::slice_command(rest);
         if (args[0] == "mesh") return zeroset::cli::mesh_command(rest);
-        constexpr std::string_view commands[] = {"render", "basins", "ray", "slice", "mesh"};
+        if (args[0] == "import") return zeroset::cli::import_command(rest);
+        constexpr std::string_view commands[] = {"render", "basins", "ray", "slice", "mesh", "import"};
         throw zeroset::cli::UsageError("unknown command '" + args[0] + "'" + zeroset::did_you_mean(args[0], commands) +
                                        " (try zeroset --help)");
     } catch (const zeroset::cli::UsageError& e) {

@@ -7,6 +7,9 @@
 #include <regex>
 
 #include "pov/pov_test_support.hpp"
+#include "zeroset/render/renderer.hpp"
+#include "zeroset/scene/load_scene.hpp"
+#include "zeroset/scene/scene_writer.hpp"
 
 namespace zeroset::pov::test {
 namespace {
@@ -41,6 +44,21 @@ TEST(PovCorpus, EverySampleSceneImportsWithLocatedMessages) {
         } catch (const SceneError& e) {
             ADD_FAILURE() << e.what();
         }
+    }
+}
+
+TEST(PovCorpus, ImportedScenesWrittenAsZerosetScenesRenderTheSame) {
+    // What `zeroset import` writes reads back as the scene it imported.
+    const auto scenes = corpus();
+    if (scenes.empty()) GTEST_SKIP() << "povray-examples is not installed";
+    RenderSettings settings;
+    settings.width = 32;
+    settings.height = 24;
+    for (const auto& scene : scenes) {
+        const PovImport imported = read_pov_scene(scene);
+        const std::string text = write_scene(imported.scene);
+        const Scene again = parse_scene(text, "written.zs", ".");
+        EXPECT_EQ(render(imported.scene, settings).image.pixels, render(again, settings).image.pixels) << scene;
     }
 }
 

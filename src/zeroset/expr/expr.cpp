@@ -217,7 +217,13 @@ std::string Expr::to_string() const {
         case Op::Mul: out << "(" << operand(0).to_string() << " * " << operand(1).to_string() << ")"; break;
         case Op::Div: out << "(" << operand(0).to_string() << " / " << operand(1).to_string() << ")"; break;
         case Op::Neg: out << "-" << operand(0).to_string(); break;
-        case Op::Powi: out << operand(0).to_string() << "^" << exponent(); break;
+        case Op::Powi: {
+            // (−x)^2, not −x^2, which reads as −(x^2); likewise a power of a power.
+            const Expr base = operand(0);
+            const bool wrap = base.op() == Op::Neg || base.op() == Op::Powi || (base.is_constant() && base.value() < 0.0);
+            out << (wrap ? "(" : "") << base.to_string() << (wrap ? ")" : "") << "^" << exponent();
+            break;
+        }
         default:
             out << op_name(op()) << "(" << operand(0).to_string();
             if (op_arity(op()) == 2) out << ", " << operand(1).to_string();

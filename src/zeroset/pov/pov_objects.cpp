@@ -316,7 +316,12 @@ std::optional<Expr> PovParser::solid_expression(const PovObject& clip, const Mat
     ExprPoint q;
     for (int i = 0; i < 3; ++i) {
         const auto& row = back->m[static_cast<std::size_t>(i)];
-        q[i] = Expr(row[0]) * p.x + Expr(row[1]) * p.y + Expr(row[2]) * p.z + Expr(row[3]);
+        Expr sum(row[3]);
+        for (int k = 0; k < 3; ++k) {  // the zero terms of a turn by right angles left out
+            const double a = row[static_cast<std::size_t>(k)];
+            if (a != 0.0) sum = sum + (a == 1.0 ? p[k] : Expr(a) * p[k]);
+        }
+        q[i] = sum;
     }
     const Expr g = substitute(f, q);
     return clip.inverse ? -g : g;
@@ -539,8 +544,6 @@ std::shared_ptr<PovObject> PovParser::polynomial(const PovToken& keyword, Object
             o.bounds = *region;
             b.bounded_by.reset();
         }
-    } else if (!b.bounded_by && b.clipped_by.empty()) {
-        note(keyword, "the " + w + " has no bounded_by: drawn within a box of ±10⁴ about its origin");
     }
     return wrap(keyword, std::move(node));
 }
