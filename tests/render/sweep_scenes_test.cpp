@@ -13,13 +13,7 @@
 namespace zeroset {
 namespace {
 
-std::vector<bool> coverage(const Scene& scene, int width, int height) {
-    RenderSettings settings;
-    settings.width = width;
-    settings.height = height;
-    return test::coverage(scene, settings);
-}
-
+using test::coverage;
 using test::covered;
 
 TEST(SweepScenes, EveryOneShowsItsTubes) {

@@ -20,6 +20,14 @@ inline std::vector<bool> coverage(const Scene& scene, const RenderSettings& sett
     return mask;
 }
 
+/// The mask at a size, with the renderer's other settings left as they are.
+inline std::vector<bool> coverage(const Scene& scene, int width, int height) {
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    return coverage(scene, settings);
+}
+
 /// The share of the pixels a mask covers.
 inline double covered(const std::vector<bool>& mask) {
     return static_cast<double>(std::count(mask.begin(), mask.end(), true)) / static_cast<double>(mask.size());

@@ -165,6 +165,27 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
     const std::uint64_t nans = scratch.counters.nan_evaluations;
     leaf.h.set_ray(ray);
     if (description_.open) {  // a sheet: the first root, wherever the ray starts
+        // Most rays start outside the solid: then the first hit is the first
+        // root, as for a closed object, unless the clip removes it there.
+        if (!octree_) {
+            const HitResult first = leaf.finder->first_hit(leaf.h, *span, scratch.counters);
+            if (first.status != HitStatus::Failed && !first.t) {
+                note_nan(leaf, nans, scratch);
+                return std::nullopt;  // no root at all in the span
+            }
+            if (first.t && (*first.t > span->t0 || leaf.h.value(span->t0, scratch.counters) >= 0.0)) {
+                const Vec3d p = ray.at(*first.t);
+                bool clipped = false;
+                if (leaf.clip) {
+                    ++scratch.counters.point_evaluations;
+                    clipped = (*leaf.clip)(p.x, p.y, p.z) > 0.0;
+                }
+                if (!clipped) {
+                    note_nan(leaf, nans, scratch);
+                    return Hit{*first.t, surface_at(ray, *first.t, BoundaryKind::Surface)};
+                }
+            }
+        }
         leaf.roots.clear();
         if (all_hits(leaf, *span, scratch) == HitStatus::Failed) ++scratch.counters.failed_queries;
         note_nan(leaf, nans, scratch);

@@ -33,6 +33,16 @@ bool among(const std::array<std::string_view, N>& words, std::string_view w) {
 /// draws it without end, zeroset within this box.
 constexpr double unbounded_extent = 1e4;
 
+/// The solid of a ball, |p − c|² − r², a quadric.
+Expr ball(const ExprPoint& p, const Vec3d& c, double r) {
+    return square(p.x - Expr(c.x)) + square(p.y - Expr(c.y)) + square(p.z - Expr(c.z)) - Expr(r * r);
+}
+
+/// The solid of an axis-aligned box of centre c and half-size h: the max of its slabs.
+Expr slabs(const ExprPoint& p, const Vec3d& c, const Vec3d& h) {
+    return max(max(abs(p.x - Expr(c.x)) - Expr(h.x), abs(p.y - Expr(c.y)) - Expr(h.y)), abs(p.z - Expr(c.z)) - Expr(h.z));
+}
+
 /// The linear part's scale when it is a rotation times a uniform scale.
 std::optional<double> similarity_scale(const Mat4& m) {
     const Vec3d a = m.transform_vector({1, 0, 0}), b = m.transform_vector({0, 1, 0}), c = m.transform_vector({0, 0, 1});
@@ -55,23 +65,37 @@ bool axis_aligned(const Mat4& m) {
 /// The number of terms of a polynomial of degree n in three variables.
 std::size_t term_count(int n) { return static_cast<std::size_t>((n + 1) * (n + 2) * (n + 3) / 6); }
 
-/// POV-Ray's order of a poly's terms: xⁱyʲzᵏ by descending i, then j, then k.
+/// POV-Ray's order of a poly's terms: xⁱyʲzᵏ by descending i, then j, then
+/// k. Written in Horner's form, nested in x, then y, then z, so that tracing
+/// it along a ray takes few products of polynomials in t.
 Expr poly_expression(int n, const std::vector<double>& c) {
     const ExprPoint p = coordinates();
-    Expr sum(0.0);
+    // coefficient(i, j, k): its place in POV-Ray's order.
+    std::vector<std::vector<std::vector<double>>> a(static_cast<std::size_t>(n + 1));
     std::size_t index = 0;
-    for (int i = n; i >= 0; --i)
-        for (int j = n - i; j >= 0; --j)
-            for (int k = n - i - j; k >= 0; --k) {
-                const double a = c[index++];
-                if (a == 0.0) continue;
-                Expr term(a);
-                if (i > 0) term = term * powi(p.x, i);
-                if (j > 0) term = term * powi(p.y, j);
-                if (k > 0) term = term * powi(p.z, k);
-                sum = sum + term;
-            }
-    return sum;
+    for (int i = n; i >= 0; --i) {
+        a[static_cast<std::size_t>(i)].resize(static_cast<std::size_t>(n - i + 1));
+        for (int j = n - i; j >= 0; --j) {
+            a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)].resize(static_cast<std::size_t>(n - i - j + 1));
+            for (int k = n - i - j; k >= 0; --k) a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)][static_cast<std::size_t>(k)] = c[index++];
+        }
+    }
+    // Horner in one variable over coefficients that are expressions.
+    const auto horner = [](const std::vector<Expr>& coefficients, const Expr& v) {
+        Expr r(0.0);
+        for (std::size_t m = coefficients.size(); m-- > 0;) r = r * v + coefficients[m];
+        return r;
+    };
+    std::vector<Expr> in_x;
+    for (const auto& plane : a) {
+        std::vector<Expr> in_y;
+        for (const auto& row : plane) {
+            std::vector<Expr> in_z(row.begin(), row.end());
+            in_y.push_back(horner(in_z, p.z));
+        }
+        in_x.push_back(horner(in_y, p.y));
+    }
+    return horner(in_x, p.x);
 }
 
 }  // namespace
@@ -305,13 +329,8 @@ std::optional<Expr> PovParser::solid_expression(const PovObject& clip, const Mat
     const ExprPoint p = coordinates();
     Expr f = n.object.surface;
     const Bounds& b = n.object.bounds;
-    if (n.object.cut_by_bounds && b.kind == Bounds::Kind::Box) {
-        const Vec3d c = b.box.center(), h = b.box.size() * 0.5;
-        f = max(f, max(max(abs(p.x - Expr(c.x)) - Expr(h.x), abs(p.y - Expr(c.y)) - Expr(h.y)), abs(p.z - Expr(c.z)) - Expr(h.z)));
-    } else if (n.object.cut_by_bounds && b.kind == Bounds::Kind::Sphere) {
-        f = max(f, square(p.x - Expr(b.center.x)) + square(p.y - Expr(b.center.y)) + square(p.z - Expr(b.center.z)) -
-                       Expr(b.radius * b.radius));
-    }
+    if (n.object.cut_by_bounds && b.kind == Bounds::Kind::Box) f = max(f, slabs(p, b.box.center(), b.box.size() * 0.5));
+    if (n.object.cut_by_bounds && b.kind == Bounds::Kind::Sphere) f = max(f, ball(p, b.center, b.radius));
     // … seen from the target's space: f(M⁻¹ x).
     ExprPoint q;
     for (int i = 0; i < 3; ++i) {
@@ -363,8 +382,7 @@ std::shared_ptr<PovObject> PovParser::sphere(const PovToken& keyword, ObjectBuil
     const double r = number("the sphere's radius");
     if (!(r > 0.0)) fail(keyword, "the sphere's radius must be positive");
     object_modifiers(b);
-    const ExprPoint p = coordinates();
-    const Expr f = square(p.x - Expr(c.x)) + square(p.y - Expr(c.y)) + square(p.z - Expr(c.z)) - Expr(r * r);
+    const Expr f = ball(coordinates(), c, r);
     const Vec3d h{r, r, r};
     auto o = leaf(keyword, located(keyword), f, grown_box(c - h, c + h));
     o->shape = Bounds::make_sphere(c, r);
@@ -379,8 +397,7 @@ std::shared_ptr<PovObject> PovParser::box(const PovToken& keyword, ObjectBuilder
     const Vec3d lo = min(a, z), hi = max(a, z);
     if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) fail(keyword, "the box is flat (its corners share a coordinate)");
     const Vec3d c = (lo + hi) * 0.5, h = (hi - lo) * 0.5;
-    const ExprPoint p = coordinates();
-    const Expr f = max(max(abs(p.x - Expr(c.x)) - Expr(h.x), abs(p.y - Expr(c.y)) - Expr(h.y)), abs(p.z - Expr(c.z)) - Expr(h.z));
+    const Expr f = slabs(coordinates(), c, h);
     auto o = leaf(keyword, located(keyword), f, grown_box(lo, hi));
     o->shape = Bounds::make_box({lo, hi});
     return o;

@@ -31,11 +31,7 @@ struct SceneParser::BlobReading {
 };
 
 SceneNodePtr SceneParser::blob(const Token& keyword) {
-    if (++objects_ > limits_.objects)
-        in_->fail(keyword.where, "the scene makes more than " + std::to_string(limits_.objects) + " objects");
-    auto node = std::make_shared<SceneNode>();
-    node->kind = SceneNode::Kind::Object;
-    if (in_->at(TokenKind::String)) node->name = in_->next().text;
+    auto node = object_node(keyword);
     BlobReading reading{*node, BlobKernel::PovRay, 1.0, {}, {}};
     in_->expect(TokenKind::LeftBrace);
     while (!in_->accept(TokenKind::RightBrace)) {
@@ -67,35 +63,14 @@ SceneNodePtr SceneParser::blob(const Token& keyword) {
 }
 
 bool SceneParser::blob_entry(BlobReading& reading) {
+    if (body_entry(reading.node, "a component", [this, &reading] { return blob_entry(reading); })) return true;
     const Token& entry = in_->peek();
-    if (entry.kind != TokenKind::Name) return false;
-    const std::string_view word = entry.text;
-    if (word == "let") {
-        in_->next();
-        let();
-        return true;
-    }
-    if (word == "for") {
-        in_->next();
-        loop(entry, [this, &reading] {
-            while (!in_->accept(TokenKind::RightBrace))
-                if (!blob_entry(reading)) in_->fail_expected("a component, let, for or '}'");
-        });
-        return true;
-    }
-    if (is_one_of(transform_keys, entry)) {
-        in_->next();
-        add_transform(entry, reading.node);
-        return true;
-    }
     if (!is_one_of(blob_keys, entry)) return false;
+    const std::string_view word = entry.text;
     if (word != "component") {
-        if (const auto first = reading.seen.find(word); first != reading.seen.end())
-            in_->fail(entry.where, "'" + std::string(word) + "' is already set in this blob block (at " +
-                                       line_and_column(first->second) + ")");
+        set_once(reading.seen, entry, "blob");
         if (!reading.components.empty() && word == "kernel")
             in_->fail(entry.where, "the kernel must come before the blob's components");
-        reading.seen.emplace(word, entry.where);
     }
     in_->next();
     Object& object = reading.node.object;

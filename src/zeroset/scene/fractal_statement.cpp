@@ -19,11 +19,7 @@ constexpr std::array<std::string_view, 8> fractal_keys{"kind",       "c",      "
 }  // namespace
 
 SceneNodePtr SceneParser::fractal(const Token& keyword) {
-    if (++objects_ > limits_.objects)
-        in_->fail(keyword.where, "the scene makes more than " + std::to_string(limits_.objects) + " objects");
-    auto node = std::make_shared<SceneNode>();
-    node->kind = SceneNode::Kind::Object;
-    if (in_->at(TokenKind::String)) node->name = in_->next().text;
+    auto node = object_node(keyword);
     FractalParameters p;
     std::map<std::string_view, SourceLocation> seen;
     in_->expect(TokenKind::LeftBrace);
@@ -40,10 +36,7 @@ SceneNodePtr SceneParser::fractal(const Token& keyword) {
         if (!is_one_of(fractal_keys, entry))
             in_->fail_expected("a key (" + join_words(fractal_keys, "or") + "), a transform or '}'");
         const std::string_view word = entry.text;
-        if (const auto first = seen.find(word); first != seen.end())
-            in_->fail(entry.where, "'" + std::string(word) + "' is already set in this fractal block (at " +
-                                       line_and_column(first->second) + ")");
-        seen.emplace(word, entry.where);
+        set_once(seen, entry, "fractal");
         in_->next();
         if (word == "kind") {
             std::vector<std::string_view> names;

@@ -82,13 +82,49 @@ void SceneParser::node_statement(const NodeSink& sink) {
     else sink(instance(keyword));
 }
 
-SceneNodePtr SceneParser::object(const Token& keyword) {
+std::shared_ptr<SceneNode> SceneParser::object_node(const Token& keyword) {
     if (++objects_ > limits_.objects)
         in_->fail(keyword.where, "the scene makes more than " + std::to_string(limits_.objects) + " objects");
     auto node = std::make_shared<SceneNode>();
     node->kind = SceneNode::Kind::Object;
     if (in_->at(TokenKind::String)) node->name = in_->next().text;
     node->defined_at = format_location(in_->file_name(), keyword.where);
+    return node;
+}
+
+bool SceneParser::body_entry(SceneNode& node, std::string_view items, const std::function<bool()>& entry) {
+    const Token& t = in_->peek();
+    if (t.kind != TokenKind::Name) return false;
+    if (t.text == "let") {
+        in_->next();
+        let();
+        return true;
+    }
+    if (t.text == "for") {
+        in_->next();
+        loop(t, [&] {
+            while (!in_->accept(TokenKind::RightBrace))
+                if (!entry()) in_->fail_expected(std::string(items) + ", let, for or '}'");
+        });
+        return true;
+    }
+    if (is_one_of(transform_keys, t)) {
+        in_->next();
+        add_transform(t, node);
+        return true;
+    }
+    return false;
+}
+
+void SceneParser::set_once(std::map<std::string_view, SourceLocation>& seen, const Token& key, std::string_view block) {
+    if (const auto first = seen.find(key.text); first != seen.end())
+        in_->fail(key.where, "'" + std::string(key.text) + "' is already set in this " + std::string(block) + " block (at " +
+                                 line_and_column(first->second) + ")");
+    seen.emplace(key.text, key.where);
+}
+
+SceneNodePtr SceneParser::object(const Token& keyword) {
+    auto node = object_node(keyword);
     Object& object = node->object;
     bool has_surface = false;
     std::optional<SourceLocation> clip_at;

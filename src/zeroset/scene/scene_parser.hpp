@@ -127,6 +127,14 @@ private:
     /// Reads one node statement (or a loop of them) into `sink`.
     void node_statement(const NodeSink& sink);
     SceneNodePtr object(const Token& keyword);
+    /// A new object node for the statement `keyword` (counted against the
+    /// object limit), with the name that follows it if one does.
+    std::shared_ptr<SceneNode> object_node(const Token& keyword);
+    /// The entries every object body with items shares — `let`, `for` (its
+    /// body read with `entry`) and transforms of `node`; false at none.
+    bool body_entry(SceneNode& node, std::string_view items, const std::function<bool()>& entry);
+    /// Records a key that may be set once; fails on the second, naming the first.
+    void set_once(std::map<std::string_view, SourceLocation>& seen, const Token& key, std::string_view block);
     SceneNodePtr composite(const Token& keyword, SceneNode::Kind kind);
 
     // blob_statement.cpp: blobs.

@@ -32,12 +32,7 @@ struct SceneParser::SweepReading {
 };
 
 SceneNodePtr SceneParser::sweep(const Token& keyword) {
-    if (++objects_ > limits_.objects)
-        in_->fail(keyword.where, "the scene makes more than " + std::to_string(limits_.objects) + " objects");
-    auto node = std::make_shared<SceneNode>();
-    node->kind = SceneNode::Kind::Object;
-    if (in_->at(TokenKind::String)) node->name = in_->next().text;
-    node->defined_at = format_location(in_->file_name(), keyword.where);
+    auto node = object_node(keyword);
     SweepReading reading{*node, SweepCurve::CatmullRom, false, {}, {}, {}, {}, {}};
     in_->expect(TokenKind::LeftBrace);
     while (!in_->accept(TokenKind::RightBrace)) {
@@ -67,36 +62,15 @@ SceneNodePtr SceneParser::sweep(const Token& keyword) {
 }
 
 bool SceneParser::sweep_entry(SweepReading& reading) {
+    if (body_entry(reading.node, "a point", [this, &reading] { return sweep_entry(reading); })) return true;
     const Token& entry = in_->peek();
-    if (entry.kind != TokenKind::Name) return false;
-    const std::string_view word = entry.text;
-    if (word == "let") {
-        in_->next();
-        let();
-        return true;
-    }
-    if (word == "for") {
-        in_->next();
-        loop(entry, [this, &reading] {
-            while (!in_->accept(TokenKind::RightBrace))
-                if (!sweep_entry(reading)) in_->fail_expected("a point, let, for or '}'");
-        });
-        return true;
-    }
-    if (is_one_of(transform_keys, entry)) {
-        in_->next();
-        add_transform(entry, reading.node);
-        return true;
-    }
     if (!is_one_of(sweep_keys, entry)) return false;
+    const std::string_view word = entry.text;
     if (word != "point") {
-        if (const auto first = reading.seen.find(word); first != reading.seen.end())
-            in_->fail(entry.where, "'" + std::string(word) + "' is already set in this sweep block (at " +
-                                       line_and_column(first->second) + ")");
+        set_once(reading.seen, entry, "sweep");
         if (reading.first_point && (word == "radius" || word == "curve"))
             in_->fail(entry.where, "the sweep's " + std::string(word) + " must come before its points (a radius after "
                                    "a point is that point's own)");
-        reading.seen.emplace(word, entry.where);
     }
     in_->next();
     if (word == "curve") {
