@@ -12,6 +12,7 @@
 #include "bindings.hpp"
 #include "values.hpp"
 #include "vec3_caster.hpp"
+#include "zeroset/pov/pov_import.hpp"
 #include "zeroset/scene/load_scene.hpp"
 #include "zeroset/scene/wording.hpp"
 
@@ -205,10 +206,20 @@ void bind_scenes(py::module_& m) {
             return surface_of(find_placed_object(s, name).object());
         }, py::arg("name") = py::none(), "The f of an object (the first when no name is given), in its own space.");
 
-    m.def("load_scene", [](const std::string& path, double clock) { return load_scene(path, {}, clock); },
-          py::arg("path"), py::arg("clock") = 0.0,
-          "Reads a .zs scene file; includes and models are found relative to it; `clock` is what the scene's clock "
-          "reads (an animation's time).");
+    m.def(
+        "load_scene",
+        [](const std::string& path, double clock, int width, int height) {
+            if (!pov::is_pov_file(path)) return load_scene(path, {}, clock);
+            pov::PovOptions options;
+            options.clock = clock;
+            options.width = width;
+            options.height = height;
+            return pov::read_pov_scene(path, options).scene;
+        },
+        py::arg("path"), py::arg("clock") = 0.0, py::arg("width") = 640, py::arg("height") = 480,
+        "Reads a .zs scene file, or a POV-Ray scene (.pov, docs/povray.md: its warnings are the scene's); includes "
+        "and models are found relative to it; `clock` is what the scene's clock reads (an animation's time); "
+        "`width` and `height` are the image size a POV-Ray scene is read for.");
     m.def(
         "parse_scene",
         [](const std::string& text, const std::string& name, const std::string& base_dir, double clock) {

@@ -30,6 +30,20 @@ def test_scene_files_load_and_parse():
     assert zs.parse_scene(text).surface("s")(0, 0, 0) == -1
 
 
+def test_povray_scenes_load_for_their_image_size(tmp_path):
+    pov = tmp_path / "two.pov"
+    pov.write_text("camera { location <0, 0, -5> look_at 0 right x*image_width/image_height angle 40 }\n"
+                   "light_source { <1, 2, -3> color rgb 1 }\n"
+                   "sphere { 0, image_width / image_height }\n"
+                   "sphere { <3, 0, 0>, 1 no_shadow }\n")
+    scene = zs.load_scene(str(pov), width=100, height=50)
+    assert scene.objects == ["sphere", "sphere"]
+    assert scene.surface()(2, 0, 0) == 0  # the radius is the image's aspect, 2
+    with pytest.raises(zs.SceneError) as error:
+        zs.load_scene(str(tmp_path / "missing.pov"))
+    assert error.value.line == 0
+
+
 def test_scene_mistakes_carry_their_place():
     with pytest.raises(zs.SceneError) as error:
         zs.parse_scene('object "s" {\n  surface x^2 +\n}\n', name="mine.zs")
