@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-60}"
 build="${FUZZ_BUILD_DIR:-build-fuzz}"
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene_parser vm_import render ray_list)
+[ ${#targets[@]} -eq 0 ] && targets=(scene_parser vm_import render ray_list pov_import)
 
 bash scripts/install-deps.sh --fuzz
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
@@ -25,6 +25,7 @@ corpus_of() {
     scene_parser | render) echo scene ;;
     vm_import) echo vm ;;
     ray_list) echo rays ;;
+    pov_import) echo pov ;;
     *) echo "fuzz.sh: unknown target $1" >&2; exit 2 ;;
   esac
 }

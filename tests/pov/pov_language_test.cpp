@@ -110,6 +110,12 @@ TEST(PovDirectives, ErrorsAreLocated) {
     EXPECT_EQ(error_of("#macro M(A) M(A) #end M(1)"), "scene.pov:1:13: macros call each other more than 200 deep");
     EXPECT_EQ(error_of("sphere { <0, 0, 0>, 1 } frobnicate"), "scene.pov:1:25: unknown statement 'frobnicate'");
     EXPECT_EQ(error_of("sphere { 0, 1 glow 1 }"), "scene.pov:1:15: unknown object modifier 'glow' in sphere");
+    // Nesting is bounded: the parser recurses.
+    EXPECT_EQ(error_of("#declare A = " + std::string(300, '(') + "1" + std::string(300, ')') + ";"),
+              "scene.pov:1:214: expressions or objects nested more than 200 deep");
+    std::string unions;
+    for (int i = 0; i < 300; ++i) unions += "union { ";
+    EXPECT_NE(error_of(unions).find("nested more than 200 deep"), std::string::npos);
 }
 
 TEST(PovDirectives, UnusedDeclarationsSayNothingUsedOnesWarn) {

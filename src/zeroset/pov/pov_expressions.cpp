@@ -164,6 +164,7 @@ PovValue PovParser::multiplicative(bool in_vector) {
 }
 
 PovValue PovParser::unary(bool in_vector) {
+    const Nesting nesting(*this);
     const PovToken& t = peek();
     if (t.is_symbol("-") || t.is_symbol("+") || t.is_symbol("!")) {
         const PovToken at = next();

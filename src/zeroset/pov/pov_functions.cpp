@@ -166,6 +166,7 @@ Expr PovParser::function_multiplicative() {
 }
 
 Expr PovParser::function_unary() {
+    const Nesting nesting(*this);
     if (accept_symbol("-")) return -function_unary();
     if (accept_symbol("+")) return function_unary();
     if (peek().is_symbol("!")) {

@@ -30,6 +30,8 @@ struct PovOptions {
     std::vector<std::filesystem::path> include_paths;
     /// #while and #for iterations in all, past which the scene is refused.
     std::uint64_t max_loop_iterations = 10'000'000;
+    /// Whether #include also searches POV-Ray's installed include folders.
+    bool search_installed_includes = true;
 };
 
 /// A scene read from POV-Ray's language. What of it zeroset draws

@@ -186,6 +186,7 @@ Mat4 PovParser::transform_statement(const PovToken& keyword) {
 }
 
 std::shared_ptr<const PovObject> PovParser::object_statement() {
+    const Nesting nesting(*this);
     const PovToken k = next();
     if (++object_count_ > 1'000'000) fail(k, "the scene makes more than 1 000 000 objects");
     if (among(unsupported_objects, k.text))

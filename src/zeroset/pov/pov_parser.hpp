@@ -228,6 +228,21 @@ private:
     /// The scene's top-level objects get POV-Ray's default texture where they give none.
     void add_top_level(const std::shared_ptr<const PovObject>& object);
 
+    /// Counts one level of nested expressions or objects while it lives;
+    /// past max_nesting the scene is refused (the parser recurses).
+    class Nesting {
+    public:
+        explicit Nesting(PovParser& parser);
+        ~Nesting() { --parser_.nesting_; }
+        Nesting(const Nesting&) = delete;
+        Nesting& operator=(const Nesting&) = delete;
+
+    private:
+        PovParser& parser_;
+    };
+    static constexpr int max_nesting = 200;
+    int nesting_ = 0;
+
     PovOptions options_;
     std::vector<std::unique_ptr<SourceFile>> files_;
     std::vector<Frame> frames_;

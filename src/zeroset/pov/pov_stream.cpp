@@ -24,10 +24,18 @@ bool opens_block(const PovToken& t) {
 
 }  // namespace
 
+PovParser::Nesting::Nesting(PovParser& parser) : parser_(parser) {
+    if (++parser_.nesting_ > max_nesting) {
+        --parser_.nesting_;
+        parser_.fail(parser_.peek(), "expressions or objects nested more than 200 deep");
+    }
+}
+
 PovParser::PovParser(const PovOptions& options) : options_(options) {
     scopes_.emplace_back();
     for (const auto& dir : options.include_paths) include_dirs_.push_back(dir.string());
-    for (const auto& dir : installed_pov_include_dirs()) include_dirs_.push_back(dir.string());
+    if (options.search_installed_includes)
+        for (const auto& dir : installed_pov_include_dirs()) include_dirs_.push_back(dir.string());
 }
 
 std::size_t PovParser::add_file(std::string name, std::filesystem::path dir, std::string text) {
