@@ -152,6 +152,10 @@ void PovParser::camera_block(const PovToken& keyword) {
         up = normalize(cross(forward, right)) * up_length;
         direction = forward * length(direction);
     }
+    const double skew = std::max(std::abs(dot(normalize(up), normalize(direction))), std::abs(dot(normalize(right), normalize(direction))));
+    if (skew > 1e-9)
+        warn(keyword, "a camera whose direction is not at right angles to its up and right vectors (a skewed image "
+                      "plane) is not supported; rendered with the plane at right angles to the direction");
     if (dot(cross(up, direction), right) < 0.0)
         warn(keyword, "a right-handed camera (right = -x…) is not supported; rendered left-handed, mirrored");
     const double aspect = right_length / up_length, image = double(options_.width) / double(options_.height);
