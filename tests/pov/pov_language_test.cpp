@@ -120,11 +120,29 @@ TEST(PovDirectives, ErrorsAreLocated) {
 
 TEST(PovDirectives, UnusedDeclarationsSayNothingUsedOnesWarn) {
     const std::string texture = "#declare T = texture { pigment { checker color rgb 1 color rgb 0 } finish { metallic } }\n";
-    const PovImport unused = import(texture + "light_source { <1, 2, 3> color rgb 1 } sphere { 0, 1 }");
+    const PovImport unused = import(texture + "light_source { <1, 2, 3> color rgb 1 } sphere { 0, 1 } global_settings { assumed_gamma 1 }");
     EXPECT_TRUE(unused.scene.warnings.empty()) << unused.scene.warnings.front();
     const PovImport used = import(texture + "light_source { <1, 2, 3> color rgb 1 } sphere { 0, 1 texture { T } }");
     EXPECT_TRUE(warned(used, "scene.pov:1:34: the pigment pattern 'checker' is not supported; rendered as its first colour, rgb <1, 1, 1>"));
     EXPECT_TRUE(warned(used, "the finish's metallic is not supported; left out"));
+    // No assumed_gamma: POV-Ray leaves gamma alone, zeroset cannot.
+    EXPECT_TRUE(warned(used, "scene.pov:1:1: no assumed_gamma"));
+}
+
+TEST(PovDirectives, SwitchCasesRunOnUntilABreak) {
+    EXPECT_DOUBLE_EQ(radius_of("#declare R = 0; #switch (1) #case (1) #declare R = R + 1; #case (2) #declare R = R + 10; "
+                               "#break #case (3) #declare R = R + 100; #end",
+                               "R"),
+                     11.0);
+    EXPECT_DOUBLE_EQ(radius_of("#declare R = 0; #switch (5) #case (1) #declare R = 1; #else #declare R = R + 2; #end", "R"), 2.0);
+}
+
+TEST(PovDirectives, FunctionsKeepTheValuesOfWhereTheyAreDefined) {
+    EXPECT_DOUBLE_EQ(radius_of("#declare R = 0.8; #declare F = function { R + x } #declare R = 0.3;", "F(0, 0, 0)"), 0.8);
+    // A macro's parameter, gone when the function is called.
+    EXPECT_DOUBLE_EQ(radius_of("#macro Shifted(S) function { x + S } #end #declare G = Shifted(2);", "G(1, 0, 0)"), 3.0);
+    // Commas may be left out in vectors.
+    EXPECT_DOUBLE_EQ(radius_of("#declare V = <3 4 0>;", "vlength(V)"), 5.0);
 }
 
 }  // namespace

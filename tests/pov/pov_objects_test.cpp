@@ -40,6 +40,9 @@ TEST(PovObjects, SolidsAndTheirTransforms) {
     EXPECT_NEAR(value_at(torus, 0, 0, 2.5), 0.0, 1e-12);
     EXPECT_LT(value_at(torus, 2, 0, 0), 0.0);
     EXPECT_GT(value_at(torus, 2, 0.6, 0), 0.0);
+    // `inverse` in a transform block inverts the whole block, wherever it is written.
+    const SceneNode& inv = first_node(import(lit + "sphere { 0, 1 transform { inverse translate x scale 2 } }"));
+    EXPECT_NEAR(length(inv.transform.transform_point({2, 0, 0}) - Vec3d{0, 0, 0}), 0.0, 1e-12);
     // POV-Ray's rotate: about x, then y, then z; translate after.
     const SceneNode& s = first_node(import(lit + "sphere { <1, 0, 0>, 0.5 rotate <0, 0, 90> translate <0, 0, 3> }"));
     EXPECT_NEAR(length(s.transform.transform_point({1, 0, 0}) - Vec3d{0, 1, 3}), 0.0, 1e-12);
@@ -162,6 +165,11 @@ TEST(PovScene, FinishesMapToMaterials) {
     EXPECT_EQ(plain.material->color, (Vec3d{0, 0, 0}));
     EXPECT_DOUBLE_EQ(plain.material->diffuse, 0.6);
     EXPECT_DOUBLE_EQ(first_node(import(lit + "#default { finish { ambient 0 diffuse 0.9 } } sphere { 0, 1 }")).material->diffuse, 0.9);
+    // A texture given again goes over the object's own: here its colour, keeping its finish.
+    const SceneNode& again = first_node(import(lit + "#declare S = sphere { 0, 1 pigment { color rgb 1 } finish { diffuse 0.3 } }\n"
+                                                     "object { S pigment { color rgb <0, 1, 0> } }"));
+    EXPECT_EQ(again.material->color, (Vec3d{0, 1, 0}));
+    EXPECT_DOUBLE_EQ(again.material->diffuse, 0.3);
     // A union's texture reaches the members that give none.
     const SceneNode& u = first_node(import(lit + "union { sphere { 0, 1 } sphere { x, 1 pigment { color rgb 1 } } pigment { color rgb <1, 0, 0> } }"));
     EXPECT_EQ(u.material->color, (Vec3d{1, 0, 0}));

@@ -94,8 +94,10 @@ PovValue PovParser::comparison(bool in_vector) {
     for (;;) {
         const PovToken& t = peek();
         const bool angle = t.is_symbol("<") || t.is_symbol(">");
+        // Only numbers compare: after a vector, '<' opens the next vector
+        // (POV-Ray lets the comma before it be left out: box { <a> <b> }).
         if (!(t.is_symbol("=") || t.is_symbol("!=") || t.is_symbol("<=") || t.is_symbol(">=") || angle) ||
-            (angle && in_vector))
+            (angle && (in_vector || !a.is_number())))
             return a;
         const PovToken at = next();
         const PovValue b = additive(in_vector);
@@ -267,28 +269,32 @@ PovValue PovParser::primary(bool in_vector) {
             if (t.text == "<") {
                 std::array<double, 5> v{};
                 int size = 0;
+                // POV-Ray lets the commas be left out: <1 0 0>.
                 do {
                     const PovToken at = peek();
                     const PovValue c = conditional_expression(true);
                     if (!c.is_number()) fail(at, "a vector's components must be numbers");
                     if (size == 5) fail(at, "a vector has at most 5 components");
                     v[static_cast<std::size_t>(size++)] = c.v[0];
-                } while (accept_symbol(","));
+                    accept_symbol(",");
+                } while (!peek().is_symbol(">") && peek().kind != PovTokenKind::End);
                 expect_symbol(">", "to close the vector");
                 if (size < 2) fail(t, "a vector needs at least 2 components");
                 return vector_of(v, size);
             }
             break;
         case PovTokenKind::Name: {
-            if (const PovValue* v = use(t.text)) {
-                if (v->kind == PovValue::Kind::Function && peek().is_symbol("(")) {
-                    const auto f = v->function;
+            if (const PovValue* found = use(t.text)) {
+                // A copy: looking at the next token may end a macro's
+                // frame and free the local it named.
+                const PovValue v = *found;
+                if (v.kind == PovValue::Kind::Function && peek().is_symbol("(")) {
                     const std::vector<Expr> args = function_arguments();
-                    const Expr r = apply(*f, args, t);
+                    const Expr r = apply(*v.function, args, t);
                     if (!r.is_constant()) fail(t, "the function " + t.text + " does not give a number here");
                     return PovValue::number(r.value());
                 }
-                return *v;
+                return v;
             }
             if (starts_color(t)) return color_value(t);
             const std::string& w = t.text;
@@ -430,10 +436,13 @@ PovValue PovParser::call_builtin(const PovToken& name) {
     if (f == "str" || f == "concat" || f == "chr" || f == "substr" || f == "strupr" || f == "strlwr") {
         PovValue s;
         s.kind = PovValue::Kind::String;
-        if (f == "str") {
+        if (f == "str") {  // str(value, length, precision): a negative length pads with zeros
             need(3, 3);
-            char buffer[64];
-            std::snprintf(buffer, sizeof buffer, "%*.*f", static_cast<int>(num(1)), std::max(0, static_cast<int>(num(2))), num(0));
+            const double length = std::clamp(num(1), -64.0, 64.0), precision = std::clamp(num(2), -1.0, 32.0);
+            char buffer[160];
+            const int width = static_cast<int>(std::abs(length));
+            const int digits = precision < 0.0 ? 6 : static_cast<int>(precision);
+            std::snprintf(buffer, sizeof buffer, length < 0.0 ? "%0*.*f" : "%*.*f", width, digits, num(0));
             s.text = buffer;
         } else if (f == "concat") {
             for (std::size_t i = 0; i < args.size(); ++i) s.text += str(i);
@@ -468,6 +477,7 @@ double PovParser::number(std::string_view what) {
     const PovToken at = peek();
     const PovValue v = expression();
     if (!v.is_number()) fail(at, std::string(what) + " must be a number, not " + kind_name(v.kind));
+    if (!std::isfinite(v.v[0])) fail(at, std::string(what) + " must be finite, but it is " + std::to_string(v.v[0]));
     return v.v[0];
 }
 
@@ -476,13 +486,17 @@ Vec3d PovParser::vector3(std::string_view what) {
     const PovValue v = expression();
     if (!v.is_numeric()) fail(at, std::string(what) + " must be a vector, not " + kind_name(v.kind));
     if (v.kind == PovValue::Kind::Vector && v.size < 3) fail(at, std::string(what) + " needs 3 components");
-    return v.xyz();
+    const Vec3d r = v.xyz();
+    if (!std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z)) fail(at, std::string(what) + " must be finite");
+    return r;
 }
 
 std::array<double, 5> PovParser::color(std::string_view what) {
     const PovToken at = peek();
     const PovValue v = starts_color(at) ? color_value(next()) : expression();
     if (!v.is_numeric()) fail(at, std::string(what) + " must be a colour, not " + kind_name(v.kind));
+    if (!std::all_of(v.v.begin(), v.v.end(), [](double c) { return std::isfinite(c); }))
+        fail(at, std::string(what) + " must be finite");
     if (v.is_number()) return {v.v[0], v.v[0], v.v[0], 0.0, 0.0};
     if (v.size < 3) fail(at, std::string(what) + " needs at least 3 components");
     return v.v;

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "zeroset/expr/shapes.hpp"
+#include "zeroset/expr/substitute.hpp"
 #include "zeroset/pov/pov_parser.hpp"
 
 namespace zeroset::pov {
@@ -55,7 +56,29 @@ std::shared_ptr<const PovFunction> PovParser::function_definition(const PovToken
                        tokens[f->begin].is_name("spline") || tokens[f->begin].kind == PovTokenKind::String))
         f->unsupported = "a function of a " +
                          (tokens[f->begin].kind == PovTokenKind::String ? std::string("string") : tokens[f->begin].text);
+    else if (f->parameters.size() <= 3)
+        f->body = read_body(*f);
     return f;
+}
+
+std::optional<Expr> PovParser::read_body(const PovFunction& function) {
+    const std::array<Expr, 3> stand_ins{var_x(), var_y(), var_z()};
+    std::map<std::string, Expr> bound;
+    for (std::size_t i = 0; i < function.parameters.size(); ++i) bound[function.parameters[i]] = stand_ins[i];
+    const std::size_t frames = frames_.size(), scopes = function_scopes_.size(), nesting = static_cast<std::size_t>(nesting_);
+    function_scopes_.push_back(std::move(bound));
+    frames_.push_back({Frame::Kind::Function, function.file, function.begin, function.end, scopes_.size(), blocks_.size()});
+    std::optional<Expr> body;
+    try {
+        body = function_expression();
+        if (frames_.back().pos != function.end) body.reset();
+    } catch (const SceneError&) {  // said again where it is called
+        body.reset();
+    }
+    frames_.resize(frames);
+    function_scopes_.resize(scopes);
+    nesting_ = static_cast<int>(nesting);
+    return body;
 }
 
 Expr PovParser::apply(const PovFunction& function, const std::vector<Expr>& arguments, const PovToken& at) {
@@ -64,6 +87,11 @@ Expr PovParser::apply(const PovFunction& function, const std::vector<Expr>& argu
     if (arguments.size() != function.parameters.size())
         fail(at, "the function takes " + std::to_string(function.parameters.size()) + " arguments, not " +
                      std::to_string(arguments.size()));
+    if (function.body) {
+        ExprPoint p{Expr(0.0), Expr(0.0), Expr(0.0)};
+        for (std::size_t i = 0; i < arguments.size(); ++i) p[static_cast<int>(i)] = arguments[i];
+        return substitute(*function.body, p);
+    }
     if (function_scopes_.size() >= max_function_depth) fail(at, "functions call each other more than 64 deep");
     std::map<std::string, Expr> bound;
     for (std::size_t i = 0; i < arguments.size(); ++i) bound[function.parameters[i]] = arguments[i];
@@ -175,13 +203,7 @@ Expr PovParser::function_unary() {
         if (!a.is_constant()) fail(at, "'!' on x, y or z is not supported in a function");
         return Expr(a.value() == 0.0 ? 1.0 : 0.0);
     }
-    return function_power();
-}
-
-Expr PovParser::function_power() {
-    const Expr base = function_primary();
-    if (!accept_symbol("^")) return base;
-    return pow(base, function_unary());
+    return function_primary();
 }
 
 Expr PovParser::function_primary() {
@@ -196,20 +218,18 @@ Expr PovParser::function_primary() {
     const std::string& w = t.text;
     for (auto scope = function_scopes_.rbegin(); scope != function_scopes_.rend(); ++scope)
         if (const auto found = scope->find(w); found != scope->end()) return found->second;
-    if (const PovValue* v = use(w)) {
-        if (v->kind == PovValue::Kind::Function) {
-            const auto f = v->function;
-            return apply(*f, function_arguments(), t);
-        }
-        if (v->is_number()) return Expr(v->v[0]);
-        if (v->is_numeric() && peek().is_symbol(".")) {  // a vector's component
+    if (const PovValue* found = use(w)) {
+        const PovValue v = *found;  // a copy: the next token may end the frame that holds it
+        if (v.kind == PovValue::Kind::Function) return apply(*v.function, function_arguments(), t);
+        if (v.is_number()) return Expr(v.v[0]);
+        if (v.is_numeric() && peek().is_symbol(".")) {  // a vector's component
             next();
             const PovToken m = expect_name("a component (x, y, z)");
             const std::size_t i = m.text == "x" ? 0 : m.text == "y" ? 1 : m.text == "z" ? 2 : 3;
             if (i == 3) fail(m, "a function takes only .x, .y or .z of a vector");
-            return Expr(v->v[i]);
+            return Expr(v.v[i]);
         }
-        fail(t, "'" + w + "' is " + kind_name(v->kind) + ", not a number a function can use");
+        fail(t, "'" + w + "' is " + kind_name(v.kind) + ", not a number a function can use");
     }
     if (w == "pi") return Expr(std::numbers::pi);
     if (w == "true" || w == "yes" || w == "on") return Expr(1.0);

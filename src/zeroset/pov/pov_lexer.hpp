@@ -5,6 +5,7 @@
 // file:line:column messages.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +28,7 @@ struct PovToken {
     std::string text;     // the name, the string's content, the directive's word or the symbol
     double number = 0.0;  // a Number's value
     SourceLocation where;
+    std::uint32_t file = 0;  // which of the reader's files it is in (set by the reader)
 
     [[nodiscard]] bool is(PovTokenKind k, std::string_view t) const { return kind == k && text == t; }
     [[nodiscard]] bool is_symbol(std::string_view t) const { return is(PovTokenKind::Symbol, t); }

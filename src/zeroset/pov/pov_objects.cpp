@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 
+#include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/substitute.hpp"
 #include "zeroset/pov/pov_parser.hpp"
 
@@ -124,6 +125,7 @@ bool PovParser::is_transform(const PovToken& t) const {
 }
 
 Mat4 PovParser::transform_statement(const PovToken& keyword) {
+    const Nesting nesting(*this);
     const std::string& w = keyword.text;
     if (w == "translate") return Mat4::translate(vector3("translate"));
     if (w == "rotate") return Mat4::rotate_xyz_degrees(vector3("rotate"));
@@ -136,7 +138,7 @@ Mat4 PovParser::transform_statement(const PovToken& keyword) {
         expect_symbol("<", "after matrix");
         std::array<double, 12> v{};
         for (std::size_t i = 0; i < 12; ++i) {
-            if (i > 0) expect_symbol(",", "between the matrix's 12 numbers");
+            if (i > 0) accept_symbol(",");  // POV-Ray lets it be left out
             const PovToken at = peek();
             const PovValue entry = conditional_expression(true);  // in a vector: '>' closes it
             if (!entry.is_number()) fail(at, "a matrix entry must be a number");
@@ -158,10 +160,11 @@ Mat4 PovParser::transform_statement(const PovToken& keyword) {
     }
     expect_symbol("{", "after transform");
     Mat4 m = Mat4::identity();
+    bool inverse = false;  // wherever it is written, `inverse` inverts the whole block
     while (!accept_symbol("}")) {
         const PovToken t = next();
         if (t.is_name("inverse")) {
-            m = m.inverse().value_or(Mat4::identity());
+            inverse = !inverse;
         } else if (is_transform(t)) {
             m = transform_statement(t) * m;
         } else if (const PovValue* v = t.kind == PovTokenKind::Name ? use(t.text) : nullptr;
@@ -170,6 +173,11 @@ Mat4 PovParser::transform_statement(const PovToken& keyword) {
         } else {
             fail(t, "expected a transform, inverse or '}' in the transform block but found " + describe(t));
         }
+    }
+    if (inverse) {
+        const auto back = m.inverse();
+        if (!back) fail(keyword, "the transform cannot be inverted (it flattens space)");
+        return *back;
     }
     return m;
 }
@@ -294,7 +302,7 @@ Bounds grown_box(const Vec3d& lo, const Vec3d& hi) {
 
 }  // namespace
 
-std::optional<Bounds> PovParser::clip_region(const PovObject& clip, const Mat4& to_local, const PovToken& at) {
+std::optional<Bounds> PovParser::clip_region(const PovObject& clip, const Mat4& to_local, const PovToken& at, bool exact) {
     if (!clip.shape) return std::nullopt;
     const Mat4 m = to_local * clip.node->transform;
     const Bounds& s = *clip.shape;
@@ -304,8 +312,9 @@ std::optional<Bounds> PovParser::clip_region(const PovObject& clip, const Mat4& 
         const Vec3d a = m.transform_point(s.box.lo), z = m.transform_point(s.box.hi);
         return Bounds::make_box({min(a, z), max(a, z)});
     }
-    warn(at, "clipping by a " + std::string(s.kind == Bounds::Kind::Sphere ? "sphere stretched unevenly" : "turned box") +
-                 " is not supported; clipped by the box around it");
+    if (exact)
+        warn(at, "clipping by a " + std::string(s.kind == Bounds::Kind::Sphere ? "sphere stretched unevenly" : "turned box") +
+                     " is not supported; clipped by the box around it");
     return Bounds::make_box(m.transform_box(s.enclosing_box()));
 }
 
@@ -352,7 +361,7 @@ bool PovParser::clip_open(SceneNode& surface, const std::vector<std::pair<const 
         clip = clip ? max(*clip, *g) : *g;
         // A clipping sphere or box inside the bounds is tighter bounds.
         if (object->shape && !object->inverse)
-            if (const auto region = clip_region(*object, m, at)) {
+            if (const auto region = clip_region(*object, m, at, false)) {  // bounds only: the clip itself is exact
                 const Box3 r = region->enclosing_box();
                 if (bounds.contains(r.lo) && bounds.contains(r.hi)) {
                     tighter = region;
@@ -368,7 +377,7 @@ bool PovParser::clip_open(SceneNode& surface, const std::vector<std::pair<const 
 
 std::shared_ptr<PovObject> PovParser::sphere(const PovToken& keyword, ObjectBuilder& b) {
     const Vec3d c = vector3("the sphere's center");
-    expect_symbol(",", "after the sphere's center");
+    accept_symbol(",");  // POV-Ray lets it be left out
     const double r = number("the sphere's radius");
     if (!(r > 0.0)) fail(keyword, "the sphere's radius must be positive");
     object_modifiers(b);
@@ -381,7 +390,7 @@ std::shared_ptr<PovObject> PovParser::sphere(const PovToken& keyword, ObjectBuil
 
 std::shared_ptr<PovObject> PovParser::box(const PovToken& keyword, ObjectBuilder& b) {
     const Vec3d a = vector3("the box's first corner");
-    expect_symbol(",", "after the box's first corner");
+    accept_symbol(",");  // POV-Ray lets it be left out
     const Vec3d z = vector3("the box's second corner");
     object_modifiers(b);
     const Vec3d lo = min(a, z), hi = max(a, z);
@@ -395,7 +404,7 @@ std::shared_ptr<PovObject> PovParser::box(const PovToken& keyword, ObjectBuilder
 
 std::shared_ptr<PovObject> PovParser::plane(const PovToken& keyword, ObjectBuilder& b) {
     const Vec3d n = vector3("the plane's normal");
-    expect_symbol(",", "after the plane's normal");
+    accept_symbol(",");  // POV-Ray lets it be left out
     const double d = number("the plane's distance");
     object_modifiers(b);
     if (!(length(n) > 0.0)) fail(keyword, "the plane's normal must not be 0");
@@ -408,14 +417,14 @@ std::shared_ptr<PovObject> PovParser::plane(const PovToken& keyword, ObjectBuild
 std::shared_ptr<PovObject> PovParser::cylinder_or_cone(const PovToken& keyword, ObjectBuilder& b) {
     const bool cone = keyword.text == "cone";
     const Vec3d a = vector3("the base point");
-    expect_symbol(",", "after the base point");
+    accept_symbol(",");  // POV-Ray lets it be left out
     double ra = 0.0;
     if (cone) {
         ra = number("the base radius");
-        expect_symbol(",", "after the base radius");
+        accept_symbol(",");  // POV-Ray lets it be left out
     }
     const Vec3d z = vector3("the cap point");
-    expect_symbol(",", "after the cap point");
+    accept_symbol(",");  // POV-Ray lets it be left out
     const double rz = number(cone ? "the cap radius" : "the radius");
     if (!cone) ra = rz;
     bool open = false;
@@ -456,7 +465,7 @@ std::shared_ptr<PovObject> PovParser::cylinder_or_cone(const PovToken& keyword, 
 
 std::shared_ptr<PovObject> PovParser::torus(const PovToken& keyword, ObjectBuilder& b) {
     const double big = number("the torus's major radius");
-    expect_symbol(",", "after the major radius");
+    accept_symbol(",");  // POV-Ray lets it be left out
     const double small = number("the torus's minor radius");
     object_modifiers(b);
     if (!(big > 0.0 && small > 0.0)) fail(keyword, "the torus's radii must be positive");
@@ -492,7 +501,7 @@ std::shared_ptr<PovObject> PovParser::polynomial(const PovToken& keyword, Object
         for (std::size_t v = 0; v < 3; ++v) {
             const Vec3d t = vector3("the quadric's coefficients");
             q[3 * v] = t.x, q[3 * v + 1] = t.y, q[3 * v + 2] = t.z;
-            expect_symbol(",", "after the quadric's coefficients");
+            accept_symbol(",");  // POV-Ray lets it be left out
         }
         q[9] = number("the quadric's constant");
         // In POV-Ray's poly order: x², xy, xz, x, y², yz, y, z², z, 1.
@@ -504,7 +513,7 @@ std::shared_ptr<PovObject> PovParser::polynomial(const PovToken& keyword, Object
         const double n = number("the poly's order");
         if (!(n >= 2 && n <= 32 && n == std::floor(n))) fail(keyword, "the poly's order must be a whole number from 2 to 32");
         degree = static_cast<int>(n);
-        expect_symbol(",", "after the poly's order");
+        accept_symbol(",");  // POV-Ray lets it be left out
         coefficients(term_count(degree));
     } else {  // polynomial { order, xyz(i, j, k): c, … }
         const double n = number("the polynomial's order");
@@ -516,9 +525,9 @@ std::shared_ptr<PovObject> PovParser::polynomial(const PovToken& keyword, Object
             if (!accept_name("xyz")) fail_expected("xyz(i, j, k): coefficient");
             expect_symbol("(", "after xyz");
             const double i = number("x's power");
-            expect_symbol(",", "");
+            accept_symbol(",");  // POV-Ray lets it be left out
             const double j = number("y's power");
-            expect_symbol(",", "");
+            accept_symbol(",");  // POV-Ray lets it be left out
             const double k = number("z's power");
             expect_symbol(")", "after xyz's powers");
             expect_symbol(":", "after xyz(…)");
@@ -576,9 +585,9 @@ std::shared_ptr<PovObject> PovParser::blob(const PovToken& keyword, ObjectBuilde
             next();
             BlobComponent c;
             c.strength = number("the strength");
-            expect_symbol(",", "after the strength");
+            accept_symbol(",");  // POV-Ray lets it be left out
             c.radius = number("the radius");
-            expect_symbol(",", "after the radius");
+            accept_symbol(",");  // POV-Ray lets it be left out
             c.center = vector3("the center");
             components.push_back(c);
             return true;
@@ -589,11 +598,11 @@ std::shared_ptr<PovObject> PovParser::blob(const PovToken& keyword, ObjectBuilde
         BlobComponent c;
         const bool cylinder = t.text == "cylinder";
         c.center = vector3(cylinder ? "the cylinder's first end" : "the center");
-        expect_symbol(",", "");
+        accept_symbol(",");  // POV-Ray lets it be left out
         Vec3d end{};
         if (cylinder) {
             end = vector3("the cylinder's second end");
-            expect_symbol(",", "");
+            accept_symbol(",");  // POV-Ray lets it be left out
         }
         c.radius = number("the radius");
         accept_symbol(",");
@@ -666,12 +675,12 @@ std::shared_ptr<PovObject> PovParser::isosurface(const PovToken& keyword, Object
             expect_symbol("{", "after " + shape.text);
             if (shape.text == "box") {
                 const Vec3d a = vector3("the box's first corner");
-                expect_symbol(",", "");
+                accept_symbol(",");  // POV-Ray lets it be left out
                 const Vec3d z = vector3("the box's second corner");
                 container = Bounds::make_box({min(a, z), max(a, z)});
             } else if (shape.text == "sphere") {
                 const Vec3d c = vector3("the sphere's center");
-                expect_symbol(",", "");
+                accept_symbol(",");  // POV-Ray lets it be left out
                 const double r = number("the sphere's radius");
                 if (!(r > 0.0)) fail(shape, "the sphere's radius must be positive");
                 container = Bounds::make_sphere(c, r);
@@ -687,9 +696,9 @@ std::shared_ptr<PovObject> PovParser::isosurface(const PovToken& keyword, Object
             next();
             (void)number(w);
             if (w == "evaluate") {
-                expect_symbol(",", "");
+                accept_symbol(",");  // POV-Ray lets it be left out
                 (void)number(w);
-                expect_symbol(",", "");
+                accept_symbol(",");  // POV-Ray lets it be left out
                 (void)number(w);
             }
             note(t, w + " is not needed: zeroset bounds the function's gradient itself and finds the first hit "
@@ -858,10 +867,25 @@ std::shared_ptr<PovObject> PovParser::finish_object(ObjectBuilder& b, std::share
     }
     node->transform = b.transform * node->transform;
     if (!node->transform.is_finite()) fail(b.keyword, "the object's transforms overflow");
-    if (b.texture && !node->material) {
-        node->material = material_of(*b.texture, b.keyword);
-        if (b.texture->color) {
-            const auto& c = *b.texture->color;
+    if (node->kind == SceneNode::Kind::Object && !node->object.blob && !node->object.sweep && !node->object.fractal) {
+        // Numbers too large for doubles: refused here, where the scene says them.
+        const Bounds& bounds = node->object.bounds;
+        const Vec3d c = bounds.kind == Bounds::Kind::None ? Vec3d{} : bounds.enclosing_box().center();
+        const Tape tape(node->object.surface);
+        Evaluator<double> f(tape);
+        if (!std::isfinite(bounds.kind == Bounds::Kind::None ? 0.0 : bounds.enclosing_box().diagonal()) ||
+            !std::isfinite(f(c.x, c.y, c.z)))
+            fail(b.keyword, "the " + b.keyword.text + "'s numbers are too large for doubles (its function or bounds overflow)");
+    }
+    if (b.texture) {
+        // A texture given again (object { Name pigment { … } }) goes over
+        // the object's own, as in POV-Ray.
+        PovTexture texture = object->texture.value_or(PovTexture{});
+        texture.merge(*b.texture);
+        node->material = material_of(texture, b.keyword);
+        object->texture = texture;
+        if (texture.color) {
+            const auto& c = *texture.color;
             object->clear = c[4] >= 1.0 || (c[3] >= 1.0 && c[0] >= 1.0 && c[1] >= 1.0 && c[2] >= 1.0);
             if (!object->clear && (c[3] > 0.0 || c[4] > 0.0))
                 warn(b.keyword, "transparency (filter, transmit) is not supported; rendered opaque");

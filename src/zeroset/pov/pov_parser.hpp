@@ -69,6 +69,13 @@ private:
     };
 
     std::size_t add_file(std::string name, std::filesystem::path dir, std::string text);
+    /// Ends the current frame (its #if blocks must be closed).
+    void pop_frame();
+    /// Ends the macro frames whose bodies have been read to their end.
+    void leave_finished_macros();
+    /// What a #declare or a macro's argument may be: an object, texture,
+    /// function, transform, a block zeroset does not read, or an expression.
+    PovValue any_value();
     /// The next token after carrying out any directives and macro calls before it.
     const PovToken& peek();
     PovToken next();
@@ -143,12 +150,15 @@ private:
     // ---- pov_functions.cpp: function { … } as expressions ----
     /// `function [(params)] { body }` after the keyword.
     std::shared_ptr<const PovFunction> function_definition(const PovToken& keyword);
+    /// A function's body read where it is defined, its parameters as x, y, z;
+    /// nothing when it cannot be read there (the state is left as it was).
+    std::optional<Expr> read_body(const PovFunction& function);
     /// The function applied to arguments.
     Expr apply(const PovFunction& function, const std::vector<Expr>& arguments, const PovToken& at);
     /// A function body's expression, with names bound to expressions.
     Expr function_expression();
     Expr function_or(), function_and(), function_comparison(), function_additive(), function_multiplicative(),
-        function_unary(), function_power(), function_primary();
+        function_unary(), function_primary();
     std::vector<Expr> function_arguments();
     /// POV-Ray's internal function `name` (functions.inc) at the arguments.
     Expr internal_function(const PovFunction& function, const std::vector<Expr>& arguments, const PovToken& at);
@@ -207,7 +217,9 @@ private:
     /// The solid of a clipping sphere or box, in the space `to_local` maps
     /// its parent's into: exact for a sphere moved, turned and scaled evenly
     /// and a box moved and scaled; else the box around it, with a warning.
-    std::optional<Bounds> clip_region(const PovObject& clip, const Mat4& to_local, const PovToken& at);
+    /// `exact`: the region is the clip itself (a warning when it is only
+    /// the box around it), not just bounds for a clip written otherwise.
+    std::optional<Bounds> clip_region(const PovObject& clip, const Mat4& to_local, const PovToken& at, bool exact = true);
     /// The solid of a plain object (f ≤ 0 within bounds that cut it) as an
     /// expression of the space `to_local` maps its parent's into; nothing
     /// for CSG, blobs and open objects.
@@ -253,6 +265,7 @@ private:
     PovImport result_;
     std::set<std::string> reported_;  // warnings and notes given, to give each once
     bool camera_seen_ = false;
+    bool gamma_given_ = false;
     int includes_open_ = 0;
     int macro_depth_ = 0;
     std::uint64_t loop_iterations_ = 0;

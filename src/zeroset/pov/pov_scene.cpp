@@ -63,6 +63,10 @@ PovImport PovParser::run(std::string text, const std::string& file_name, const s
     if (!blocks_.empty()) fail(peek(), "a #" + std::string(blocks_.back().kind == Block::Kind::If ? "if" : "while") +
                                            " is not closed by an #end");
     if (result_.scene.lights.empty()) warn(peek(), "the scene has no light_source; zeroset lights it from the camera");
+    if (!gamma_given_)
+        warn(frames_.front().file == 0 ? files_[0]->tokens.front() : peek(),
+             "no assumed_gamma: POV-Ray 3.7 then leaves gamma uncorrected, zeroset works in linear light as with "
+             "assumed_gamma 1.0, so the image is lighter than POV-Ray's");
     return std::move(result_);
 }
 
@@ -134,6 +138,7 @@ void PovParser::camera_block(const PovToken& keyword) {
             moved = transform_statement(t) * moved;
         } else if (w == "normal") {
             skip_block(t, "a camera normal", nullptr);
+            warn(t, "a camera normal (a perturbed view) is not supported; left out");
         } else {
             fail(t, "unknown camera keyword " + describe(t));
         }
@@ -141,13 +146,19 @@ void PovParser::camera_block(const PovToken& keyword) {
     const double right_length = length(right), up_length = length(up);
     if (!(right_length > 0.0 && up_length > 0.0 && length(direction) > 0.0))
         fail(keyword, "the camera's right, up and direction must not be 0");
+    // Handedness as written, before look_at turns the vectors (POV-Ray keeps it).
+    const bool right_handed = dot(cross(up, direction), right) < 0.0;
     if (angle) direction = normalize(direction) * (0.5 * right_length / std::tan(0.5 * *angle * radians_per_degree));
     if (look_at) {
         const Vec3d d = *look_at - location;
         if (!(length(d) > 0.0)) fail(keyword, "look_at is the camera's location");
         const Vec3d forward = normalize(d);
-        const Vec3d across = cross(sky, forward);
-        if (!(length(across) > 1e-12)) fail(keyword, "the camera looks along its sky vector: which way is up is not defined");
+        Vec3d across = cross(sky, forward);
+        if (!(length(across) > 1e-12)) {  // looking along the sky: POV-Ray keeps the right vector
+            warn(keyword, "the camera looks along its sky vector; its right vector is kept as it was");
+            across = right - forward * dot(right, forward);
+            if (!(length(across) > 1e-12)) fail(keyword, "the camera looks along its sky and right vectors: which way is up is not defined");
+        }
         right = normalize(across) * right_length;
         up = normalize(cross(forward, right)) * up_length;
         direction = forward * length(direction);
@@ -156,7 +167,7 @@ void PovParser::camera_block(const PovToken& keyword) {
     if (skew > 1e-9)
         warn(keyword, "a camera whose direction is not at right angles to its up and right vectors (a skewed image "
                       "plane) is not supported; rendered with the plane at right angles to the direction");
-    if (dot(cross(up, direction), right) < 0.0)
+    if (right_handed)
         warn(keyword, "a right-handed camera (right = -x…) is not supported; rendered left-handed, mirrored");
     const double aspect = right_length / up_length, image = double(options_.width) / double(options_.height);
     if (std::abs(aspect - image) > 0.01 * image)
@@ -205,9 +216,10 @@ Light PovParser::light_block(const PovToken& keyword) {
             warn(t, "an area light is not supported; rendered as a point light (hard shadows)");
         } else if (w == "adaptive" || w == "jitter" || w == "circular" || w == "orient" || w == "media_interaction" ||
                    w == "media_attenuation") {
-            if (w == "adaptive" || peek().kind == PovTokenKind::Number) (void)number(w);
+            if (w == "adaptive" || starts_optional_switch()) (void)number(w);
         } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
             skip_block(t, "a light's " + w, nullptr);
+            warn(t, "a light's " + w + " is not supported; left out");
         } else if (is_transform(t)) {
             moved = transform_statement(t) * moved;
         } else {
@@ -239,6 +251,7 @@ void PovParser::global_settings(const PovToken& keyword) {
         const PovToken t = next();
         const std::string& w = t.text;
         if (w == "assumed_gamma") {
+            gamma_given_ = true;
             const double g = number("assumed_gamma");
             if (g != 1.0)
                 warn(t, "assumed_gamma " + std::to_string(g) + " is not supported; rendered as 1.0 (zeroset works in linear light)");

@@ -44,6 +44,7 @@ std::size_t PovParser::add_file(std::string name, std::filesystem::path dir, std
     file->dir = std::move(dir);
     file->text = std::move(text);
     file->tokens = tokenize_pov(file->text, file->name);
+    for (PovToken& t : file->tokens) t.file = static_cast<std::uint32_t>(files_.size());
     files_.push_back(std::move(file));
     return files_.size() - 1;
 }
@@ -55,18 +56,7 @@ const PovToken& PovParser::peek() {
         const bool ended = f.pos >= f.end || tokens[f.pos].kind == PovTokenKind::End;
         if (ended) {
             if (frames_.size() == 1 || f.kind == Frame::Kind::Function) return tokens[std::min(f.pos, tokens.size() - 1)];
-            if (blocks_.size() != f.blocks) {
-                const Block& open = blocks_.back();
-                fail(tokens[std::min(f.pos, tokens.size() - 1)],
-                     std::string("a #") + (open.kind == Block::Kind::If ? "if" : open.kind == Block::Kind::While ? "while"
-                                                                              : open.kind == Block::Kind::For ? "for"
-                                                                                                              : "switch") +
-                         " is not closed by an #end before here");
-            }
-            scopes_.resize(f.scopes);
-            if (f.kind == Frame::Kind::Macro) --macro_depth_;
-            if (f.kind == Frame::Kind::File) --includes_open_;
-            frames_.pop_back();
+            pop_frame();
             continue;
         }
         const PovToken& t = tokens[f.pos];
@@ -84,6 +74,28 @@ const PovToken& PovParser::peek() {
         }
         return t;
     }
+}
+
+void PovParser::pop_frame() {
+    const Frame& f = frames_.back();
+    const std::vector<PovToken>& tokens = files_[f.file]->tokens;
+    if (blocks_.size() != f.blocks) {
+        const Block& open = blocks_.back();
+        fail(tokens[std::min(f.pos, tokens.size() - 1)],
+             std::string("a #") + (open.kind == Block::Kind::If ? "if" : open.kind == Block::Kind::While ? "while"
+                                                                      : open.kind == Block::Kind::For ? "for"
+                                                                                                      : "switch") +
+                 " is not closed by an #end before here");
+    }
+    scopes_.resize(f.scopes);
+    if (f.kind == Frame::Kind::Macro) --macro_depth_;
+    if (f.kind == Frame::Kind::File) --includes_open_;
+    frames_.pop_back();
+}
+
+void PovParser::leave_finished_macros() {
+    while (frames_.size() > 1 && frames_.back().kind == Frame::Kind::Macro && frames_.back().pos >= frames_.back().end)
+        pop_frame();
 }
 
 PovToken PovParser::next() {
@@ -119,12 +131,10 @@ PovToken PovParser::expect_name(std::string_view what) {
     return next();
 }
 
-std::string PovParser::located(const PovToken& at) const {
-    return format_location(files_[frames_.back().file]->name, at.where);
-}
+std::string PovParser::located(const PovToken& at) const { return format_location(files_[at.file]->name, at.where); }
 
 void PovParser::fail(const PovToken& at, const std::string& message) const {
-    throw SceneError(files_[frames_.back().file]->name, at.where, message);
+    throw SceneError(files_[at.file]->name, at.where, message);
 }
 
 void PovParser::fail_expected(const std::string& what) {
@@ -209,8 +219,22 @@ void PovParser::directive(const PovToken& keyword) {
     } else if (d == "if" || d == "ifdef" || d == "ifndef") {
         conditional(keyword);
     } else if (d == "else" || d == "elseif" || d == "case" || d == "range" || d == "break") {
-        // Met while reading a taken branch or case: the rest up to its #end is skipped.
+        // Met while reading a taken branch: the rest up to its #end is
+        // skipped. In a #switch, a case runs on into the next one's body
+        // until a #break, as in POV-Ray.
         if (blocks_.empty() || blocks_.back().frame != frames_.size() - 1) fail(keyword, "#" + d + " without an open block");
+        if (blocks_.back().kind == Block::Kind::Switch && d != "break" && d != "elseif") {
+            if (d != "else") {  // the case's own values are not looked at
+                expect_symbol("(", "after #" + d);
+                (void)number("the case's value");
+                if (d == "range") {
+                    accept_symbol(",");
+                    (void)number("the range's end");
+                }
+                expect_symbol(")", "to close the case");
+            }
+            return;
+        }
         if (d == "break")  // out of a loop too: first out of the #if blocks inside it
             while (blocks_.back().kind == Block::Kind::If) {
                 skip_to({});
@@ -232,9 +256,12 @@ void PovParser::directive(const PovToken& keyword) {
     } else if (d == "macro") {
         define_macro(keyword);
     } else if (d == "undef") {
-        const PovToken name = expect_name("a name after #undef");
-        for (auto& scope : scopes_) scope.erase(name.text);
-        macros_.erase(name.text);
+        const PovToken name = peek_raw(0);  // raw: a macro's name is not a call here
+        if (name.kind != PovTokenKind::Name) fail_expected("a name after #undef");
+        ++frames_.back().pos;
+        bool found = false;
+        for (auto scope = scopes_.rbegin(); scope != scopes_.rend() && !found; ++scope) found = scope->erase(name.text) > 0;
+        if (!found) macros_.erase(name.text);
     } else if (d == "version") {
         (void)number("the version");
         accept_symbol(";");
@@ -255,12 +282,35 @@ void PovParser::directive(const PovToken& keyword) {
 }
 
 void PovParser::declare(const PovToken& keyword, bool local) {
+    if (peek_raw(0).is_name("deprecated")) {  // #declare deprecated [once] ["message"] Name = …
+        ++frames_.back().pos;
+        if (peek_raw(0).is_name("once")) ++frames_.back().pos;
+        if (peek_raw(0).kind == PovTokenKind::String) ++frames_.back().pos;
+    }
     const PovToken name = peek_raw(0);
     if (name.kind != PovTokenKind::Name) fail_expected("a name after #" + keyword.text);
     ++frames_.back().pos;
     if (peek().is_symbol("[")) fail(peek(), "arrays are not supported");
     expect_symbol("=", "after #" + keyword.text + " " + name.text);
     captures_.emplace_back();
+    PovValue value = any_value();
+    if (value.kind == PovValue::Kind::Function && value.function->name.empty()) {
+        auto named = std::make_shared<PovFunction>(*value.function);
+        named->name = name.text;
+        value.function = std::move(named);
+    }
+    // The ';' read raw: peeking past it would carry out the next directive
+    // (another #declare, say) before this one is assigned. A macro whose
+    // body was the value has run out: its ';' is in the caller's text.
+    leave_finished_macros();
+    if (peek_raw(0).is_symbol(";")) ++frames_.back().pos;
+    value.deferred_warnings = std::move(captures_.back().first);
+    value.deferred_notes = std::move(captures_.back().second);
+    captures_.pop_back();
+    assign(name.text, std::move(value), local);
+}
+
+PovValue PovParser::any_value() {
     PovValue value;
     const PovToken& first = peek();
     if (starts_object(first)) {
@@ -276,13 +326,7 @@ void PovParser::declare(const PovToken& keyword, bool local) {
     } else if (first.is_name("function")) {
         const PovToken k = next();
         value.kind = PovValue::Kind::Function;
-        auto f = function_definition(k);
-        if (f->name.empty()) {
-            auto named = std::make_shared<PovFunction>(*f);
-            named->name = name.text;
-            f = std::move(named);
-        }
-        value.function = std::move(f);
+        value.function = function_definition(k);
     } else if (first.is_name("transform")) {
         const PovToken k = next();
         value.kind = PovValue::Kind::Transform;
@@ -299,20 +343,20 @@ void PovParser::declare(const PovToken& keyword, bool local) {
     } else {
         value = expression();
     }
-    // The ';' read raw: peeking past it would carry out the next directive
-    // (another #declare, say) before this one is assigned.
-    if (peek_raw(0).is_symbol(";")) ++frames_.back().pos;
-    value.deferred_warnings = std::move(captures_.back().first);
-    value.deferred_notes = std::move(captures_.back().second);
-    captures_.pop_back();
-    assign(name.text, std::move(value), local);
+    return value;
 }
 
 void PovParser::include(const PovToken& keyword) {
     const std::string written = string_value("the file to include");
     if (includes_open_ >= max_include_depth) fail(keyword, "includes nested more than 64 deep (an include cycle?)");
-    std::vector<std::filesystem::path> places{files_[frames_.back().file]->dir};
-    for (const std::string& dir : include_dirs_) places.emplace_back(dir);
+    // The including file's folder, the scene's, the extra ones, POV-Ray's: each once.
+    std::vector<std::filesystem::path> places;
+    const auto add = [&](const std::filesystem::path& dir) {
+        if (std::find(places.begin(), places.end(), dir) == places.end()) places.push_back(dir);
+    };
+    add(files_[frames_.back().file]->dir);
+    add(files_[0]->dir);
+    for (const std::string& dir : include_dirs_) add(dir);
     for (const auto& dir : places) {
         const std::filesystem::path path = resolve_path(dir, written);
         std::error_code error;
@@ -325,6 +369,7 @@ void PovParser::include(const PovToken& keyword) {
         }
         const std::size_t file = add_file(path.string(), path.parent_path(), std::move(text));
         frames_.push_back({Frame::Kind::File, file, 0, files_[file]->tokens.size() - 1, scopes_.size(), blocks_.size()});
+        scopes_.emplace_back();  // the include's own #local names, gone at its end
         ++includes_open_;
         return;
     }
@@ -471,14 +516,7 @@ void PovParser::call_macro(const PovToken& name, const Macro& macro) {
     expect_symbol("(", "after the macro " + name.text);
     for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
         if (i > 0) expect_symbol(",", "between the arguments of " + name.text);
-        PovValue value;
-        if (starts_object(peek())) {
-            value.kind = PovValue::Kind::Object;
-            value.object = object_statement();
-        } else {
-            value = expression();
-        }
-        arguments[macro.parameters[i]] = std::move(value);
+        arguments[macro.parameters[i]] = any_value();
     }
     expect_symbol(")", "to close the arguments of " + name.text + " (it takes " +
                            std::to_string(macro.parameters.size()) + ")");

@@ -82,6 +82,7 @@ void PovParser::skip_block(const PovToken& keyword, const std::string& what, Pov
 }
 
 bool PovParser::texture_item(PovTexture& texture) {
+    const Nesting nesting(*this);
     const PovToken& t = peek();
     if (t.kind != PovTokenKind::Name) return false;
     const std::string word = t.text;
@@ -220,7 +221,8 @@ void PovParser::finish_block(const PovToken& keyword, PovFinish& finish) {
                     const PovToken& t = peek();
                     if (t.kind == PovTokenKind::Name && !lookup(t.text) && !starts_color(t)) {
                         const PovToken option = next();
-                        if (option.text == "falloff" || option.text == "exponent" || option.text == "metallic") (void)number(option.text);
+                        if (option.text == "falloff" || option.text == "exponent") (void)number(option.text);
+                        if (option.text == "metallic" && starts_optional_switch()) (void)number(option.text);
                         warn(option, "reflection's " + option.text + " is not supported; left out");
                         continue;
                     }
@@ -239,7 +241,7 @@ void PovParser::finish_block(const PovToken& keyword, PovFinish& finish) {
                    w == "subsurface" || w == "irid" || w == "fresnel") {
             const PovToken& v = peek();
             if (v.is_symbol("{")) skip_block(k, "finish " + w, nullptr);
-            else if (v.kind == PovTokenKind::Number || v.is_symbol("<") || v.is_symbol("(") || v.is_symbol("-") ||
+            else if (starts_optional_switch() || v.is_symbol("<") || v.is_symbol("(") || v.is_symbol("-") ||
                      (v.kind == PovTokenKind::Name && lookup(v.text)))
                 (void)expression();
             warn(k, "the finish's " + w + " is not supported; left out");

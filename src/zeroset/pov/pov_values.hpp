@@ -34,14 +34,17 @@ struct PovTexture {
     void merge(const PovTexture& later);
 };
 
-/// A function { … }: its parameters and where its body's tokens are, read
-/// again (with the arguments bound) at each call; or one of POV-Ray's
-/// internal functions (functions.inc: `function { internal(n) }`), by the
-/// name it was declared as.
+/// A function { … }: its parameters and its body — read where it is
+/// defined, as POV-Ray does, with its (at most three) parameters standing
+/// as x, y and z, so the names it uses keep the values they had there; a
+/// body that cannot be read there is read again at each call, with the
+/// arguments bound, to say why. Or one of POV-Ray's internal functions
+/// (functions.inc: `function { internal(n) }`), by the name it was declared as.
 struct PovFunction {
     std::vector<std::string> parameters;  // x, y, z when none are written
     std::size_t file = 0;                 // the source file's index
     std::size_t begin = 0, end = 0;       // the body's tokens, [begin, end)
+    std::optional<Expr> body;             // read at its definition, parameters as x, y, z
     std::optional<int> internal;
     std::string name;         // the name it was first declared as
     std::string unsupported;  // what it is, when zeroset cannot read it ("a function of a pattern")
@@ -57,6 +60,9 @@ struct PovObject {
     /// Its texture lets all light through (rgbf <1, 1, 1, 1>, transmit 1):
     /// in an intersection it only clips the others.
     bool clear = false;
+    /// The texture given to this node itself, if any (node->material is its
+    /// material), for a texture given again to go over it.
+    std::optional<PovTexture> texture;
     std::string kind;      // "sphere", "quartic", …: for messages
     SourceLocation where;
 };
