@@ -55,6 +55,8 @@ TEST(PovExpressions, NumbersVectorsAndBuiltIns) {
     EXPECT_DOUBLE_EQ(radius_of("", "strlen(concat(\"ab\", str(12, 0, 0)))"), 4.0);
     EXPECT_NEAR(radius_of("", "vrotate(x, <0, 0, 90>).y"), 1.0, 1e-12);
     EXPECT_DOUBLE_EQ(radius_of("", "(1 = 1) + (1 != 1) + (true & !false) + (0 | off)"), 2.0);
+    // '<' compares, unless a vector follows with its comma left out before it.
+    EXPECT_DOUBLE_EQ(radius_of("#declare A = (1 < 2) + select(1 < 2, 0, 1) + (2 < 1);", "A + 1"), 3.0);
     // A colour's components: rgb, then overrides.
     EXPECT_DOUBLE_EQ(radius_of("#declare C = color rgb <0.25, 0.5, 1> blue 0.75 transmit 0.5;", "C.blue + C.transmit"), 1.25);
     EXPECT_DOUBLE_EQ(radius_of("#declare C = color red 1 green 0.5;", "C.red + C.green + C.blue"), 1.5);

@@ -96,6 +96,24 @@ TEST(PovObjects, BlobsIsosurfacesAndCsg) {
     EXPECT_EQ(first_node(import(lit + "merge { sphere { 0, 1 } sphere { x, 1 } }")).kind, SceneNode::Kind::Group);
 }
 
+TEST(PovObjects, SphereSweepsAreSweeps) {
+    const SceneNode linear = first_node(import(lit + "sphere_sweep { linear_spline 3, <0, 0, 0>, 0.5, <1, 0, 0>, 0.2, <1, 1, 0>, 0.2 }"));
+    ASSERT_TRUE(linear.object.sweep);
+    ASSERT_EQ(linear.object.sweep->size(), 2U);
+    EXPECT_DOUBLE_EQ((*linear.object.sweep)[0].radius_from(), 0.5);
+    EXPECT_EQ((*linear.object.sweep)[1].control()[1], (Vec3d{1, 1, 0}));
+    // cubic_spline is Catmull–Rom through the inner points; its radius goes linearly, with a warning.
+    const PovImport cubic = import(lit + "sphere_sweep { cubic_spline 4, <0, 0, 0>, 0.1 <1, 0, 0>, 0.1 <1, 1, 0>, 0.2 <0, 1, 0>, 0.1 tolerance 1e-4 }");
+    const auto& pieces = *first_node(cubic).object.sweep;
+    ASSERT_EQ(pieces.size(), 1U);
+    EXPECT_EQ(pieces[0].control()[0], (Vec3d{1, 0, 0}));
+    EXPECT_EQ(pieces[0].control()[3], (Vec3d{1, 1, 0}));
+    EXPECT_TRUE(warned(cubic, "radius goes linearly along each piece"));
+    EXPECT_EQ(cubic.notes.size(), 1U);  // tolerance: not needed
+    EXPECT_EQ(error_of("sphere_sweep { cubic_spline 3, <0, 0, 0>, 0.1 <1, 0, 0>, 0.1 <1, 1, 0>, 0.1 }"),
+              "scene.pov:1:1: sphere_sweep: an open spline sweep needs at least 4 points");
+}
+
 TEST(PovObjects, ClippingLeavesASurfaceOpen) {
     // clipped_by planes: the sphere is open, drawn where both planes say inside.
     const SceneNode& s = first_node(import(lit + "sphere { 0, 1 clipped_by { plane { x, 0.5 } plane { -x, 0.5 } } }"));

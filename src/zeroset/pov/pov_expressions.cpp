@@ -97,7 +97,7 @@ PovValue PovParser::comparison(bool in_vector) {
         // Only numbers compare: after a vector, '<' opens the next vector
         // (POV-Ray lets the comma before it be left out: box { <a> <b> }).
         if (!(t.is_symbol("=") || t.is_symbol("!=") || t.is_symbol("<=") || t.is_symbol(">=") || angle) ||
-            (angle && (in_vector || !a.is_number())))
+            (angle && (in_vector || !a.is_number())) || (t.is_symbol("<") && opens_vector()))
             return a;
         const PovToken at = next();
         const PovValue b = additive(in_vector);
@@ -112,6 +112,26 @@ PovValue PovParser::comparison(bool in_vector) {
         else r = x >= y;
         a = PovValue::number(r ? 1.0 : 0.0);
     }
+}
+
+bool PovParser::opens_vector() {
+    // After a number, "< a, b, … >" is the next value with its comma left
+    // out (sphere_sweep { … 0.1 <1, 0, 0> … }); "a < b" is a comparison. A
+    // vector has a comma and then a '>' before anything closes around it.
+    int depth = 0;
+    bool comma = false;
+    for (std::size_t k = 1; k < 256; ++k) {
+        const PovToken& t = peek_raw(k);
+        if (t.kind == PovTokenKind::End || t.kind == PovTokenKind::Directive || t.is_symbol(";")) return false;
+        if (t.is_symbol("(") || t.is_symbol("[") || t.is_symbol("{")) ++depth;
+        if (t.is_symbol(")") || t.is_symbol("]") || t.is_symbol("}")) {
+            if (depth == 0) return false;
+            --depth;
+        }
+        if (depth == 0 && t.is_symbol(",")) comma = true;
+        if (depth == 0 && t.is_symbol(">")) return comma;
+    }
+    return false;
 }
 
 PovValue PovParser::promoted(const PovValue& value, int size, const PovToken& at) const {

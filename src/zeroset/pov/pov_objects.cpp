@@ -11,18 +11,19 @@
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/substitute.hpp"
 #include "zeroset/pov/pov_parser.hpp"
+#include "zeroset/trace/sweep_path.hpp"
 
 namespace zeroset::pov {
 
 namespace {
 
-constexpr std::array<std::string_view, 13> supported_objects{
-    "sphere", "box",  "plane",      "cylinder", "cone",       "torus",        "quadric",
-    "cubic",  "quartic", "poly",    "polynomial", "blob",     "isosurface"};
+constexpr std::array<std::string_view, 14> supported_objects{
+    "sphere", "box",     "plane", "cylinder",   "cone", "torus",      "quadric",
+    "cubic",  "quartic", "poly",  "polynomial", "blob", "isosurface", "sphere_sweep"};
 constexpr std::array<std::string_view, 5> csg_objects{"union", "merge", "intersection", "difference", "object"};
-constexpr std::array<std::string_view, 18> unsupported_objects{
+constexpr std::array<std::string_view, 17> unsupported_objects{
     "lathe", "sor",      "prism",       "superellipsoid", "height_field", "mesh",    "mesh2",  "text",  "julia_fractal",
-    "sphere_sweep", "bicubic_patch", "disc", "triangle", "smooth_triangle", "polygon", "parametric", "ovus", "lemon"};
+    "bicubic_patch", "disc", "triangle", "smooth_triangle", "polygon", "parametric", "ovus", "lemon"};
 
 template <std::size_t N>
 bool among(const std::array<std::string_view, N>& words, std::string_view w) {
@@ -201,6 +202,7 @@ std::shared_ptr<const PovObject> PovParser::object_statement() {
     else if (w == "quadric" || w == "cubic" || w == "quartic" || w == "poly" || w == "polynomial") object = polynomial(k, b);
     else if (w == "blob") object = blob(k, b);
     else if (w == "isosurface") object = isosurface(k, b);
+    else if (w == "sphere_sweep") object = sphere_sweep(k, b);
     else if (w == "object") object = object_reference(k, b);
     else object = csg(k, b);
     return finish_object(b, std::move(object));
@@ -719,6 +721,49 @@ std::shared_ptr<PovObject> PovParser::isosurface(const PovToken& keyword, Object
     node->object.bounds = container;
     node->object.cut_by_bounds = true;  // POV-Ray draws the container's cut on purpose …
     node->object.open = open;           // … unless the isosurface is open
+    return wrap(keyword, std::move(node));
+}
+
+std::shared_ptr<PovObject> PovParser::sphere_sweep(const PovToken& keyword, ObjectBuilder& b) {
+    // sphere_sweep { linear_spline | cubic_spline | b_spline  N, <c>, r, …  [tolerance t] }:
+    // the sweep primitive, whose splines are POV-Ray's (cubic_spline is
+    // Catmull–Rom; both splines' first and last points only steer).
+    const PovToken kind = expect_name("linear_spline, cubic_spline or b_spline");
+    const SweepCurve curve = kind.text == "linear_spline"  ? SweepCurve::Linear
+                             : kind.text == "cubic_spline" ? SweepCurve::CatmullRom
+                             : kind.text == "b_spline"     ? SweepCurve::BSpline
+                                                           : (fail(kind, "a sphere_sweep's spline is linear_spline, cubic_spline or b_spline"), SweepCurve::Linear);
+    const double count = number("the number of spheres");
+    if (!(count >= 2 && count <= 1'000'000 && count == std::floor(count))) fail(keyword, "the number of spheres must be a whole number from 2 to 1 000 000");
+    std::vector<SweepPoint> points;
+    for (int i = 0; i < static_cast<int>(count); ++i) {
+        accept_symbol(",");  // POV-Ray lets it be left out
+        const Vec3d c = vector3("a sphere's center");
+        accept_symbol(",");
+        const double r = number("a sphere's radius");
+        if (!(r >= 0.0)) fail(keyword, "a sphere's radius must not be negative");
+        points.push_back({c, r});
+    }
+    object_modifiers(b, [&](const PovToken& t) {
+        if (!t.is_name("tolerance")) return false;
+        next();
+        (void)number("the tolerance");
+        note(t, "the sphere_sweep's tolerance is not needed: zeroset finds its spans by the roots of polynomials");
+        return true;
+    });
+    if (curve != SweepCurve::Linear &&
+        std::any_of(points.begin(), points.end(), [&](const SweepPoint& p) { return p.radius != points.front().radius; }))
+        warn(keyword, "a spline sphere_sweep's radius goes linearly along each piece in zeroset, not with the spline; "
+                      "the tube's thickness differs slightly between its points");
+    auto node = object_node(keyword, located(keyword));
+    try {
+        node->object.sweep = std::make_shared<const std::vector<SweptSegment>>(sweep_segments(curve, points, false));
+    } catch (const std::invalid_argument& e) {
+        fail(keyword, std::string("sphere_sweep: ") + e.what());
+    }
+    Box3 box = empty_box();
+    for (const SweptSegment& s : *node->object.sweep) box = united(box, s.bounds());
+    node->object.bounds = Bounds::make_box(box);
     return wrap(keyword, std::move(node));
 }
 

@@ -146,6 +146,9 @@ private:
     PovValue promoted(const PovValue& value, int size, const PovToken& at) const;
     PovValue arithmetic(const PovValue& a, const PovValue& b, char op, const PovToken& at) const;
     [[nodiscard]] bool starts_color(const PovToken& t) const;
+    /// Whether the '<' coming next opens a vector (with a comma and a '>'
+    /// before anything closes) rather than comparing.
+    bool opens_vector();
 
     // ---- pov_functions.cpp: function { … } as expressions ----
     /// `function [(params)] { body }` after the keyword.
@@ -202,6 +205,7 @@ private:
     std::shared_ptr<PovObject> polynomial(const PovToken& keyword, ObjectBuilder& b);
     std::shared_ptr<PovObject> blob(const PovToken& keyword, ObjectBuilder& b);
     std::shared_ptr<PovObject> isosurface(const PovToken& keyword, ObjectBuilder& b);
+    std::shared_ptr<PovObject> sphere_sweep(const PovToken& keyword, ObjectBuilder& b);
     std::shared_ptr<PovObject> csg(const PovToken& keyword, ObjectBuilder& b);
     std::shared_ptr<PovObject> object_reference(const PovToken& keyword, ObjectBuilder& b);
     /// Reads the modifiers common to all objects (transforms, textures,
