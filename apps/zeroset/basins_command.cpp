@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "image_output.hpp"
 #include "options.hpp"
+#include "scene_input.hpp"
 #include "ray_options.hpp"
 #include "zeroset/io/image_writer.hpp"
 #include "zeroset/render/newton_basins.hpp"
@@ -55,7 +56,7 @@ Options:
 int basins_command(const std::vector<std::string>& args) {
     const Options options(args,
                           {"-o", "--output", "--format", "--object", "--origin", "--dir", "--re", "--im", "--width", "--height",
-                           "--iterations", "--threads"},
+                           "--iterations", "--threads", "--include-path"},
                           {"-h", "--help"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(basins_usage().c_str(), stdout);
@@ -74,7 +75,7 @@ int basins_command(const std::vector<std::string>& args) {
     const Ray ray{vector_option(options, "--origin").value_or(survey_origin),
                   vector_option(options, "--dir").value_or(survey_dir)};
 
-    const Scene scene = options.positional().empty() ? default_scene() : load_scene(options.positional()[0]);
+    const Scene scene = options.positional().empty() ? default_scene() : load_scene_file(options.positional()[0], options);
     const PlacedObject object = find_object(scene, options.value("--object"));
     const BasinMap map = newton_basins(Tape(surface_of(object.object())), to_object_space(object, ray), settings);
     output.write(map.image);

@@ -67,7 +67,7 @@ std::string accuracy(MeshMethod method, const PolygonizeStats& s) {
 }  // namespace
 
 int mesh_command(const std::vector<std::string>& args) {
-    const Options options(args, {"-o", "--output", "--resolution", "--method", "--object", "--region"},
+    const Options options(args, {"-o", "--output", "--resolution", "--method", "--object", "--region", "--include-path"},
                           {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(mesh_usage, stdout);

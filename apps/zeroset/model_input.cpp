@@ -1,6 +1,8 @@
 // load_model_input: models through ModelLibrary, scenes through load_scene.
 #include "model_input.hpp"
 
+#include "scene_input.hpp"
+
 #include <string>
 
 #include "ray_options.hpp"
@@ -20,7 +22,7 @@ ModelInput load_model_input(const std::filesystem::path& path, const Options& op
             throw SceneError(path.string(), std::string("cannot open the model file: ") + e.what());
         }
     }
-    const Scene scene = load_scene(path);
+    const Scene scene = load_scene_file(path, options);
     const PlacedObject object = find_object(scene, options.value("--object"));
     const Bounds& bounds = object.object().bounds;
     return {surface_of(object.object()),

@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "options.hpp"
+#include "scene_input.hpp"
 #include "ray_list.hpp"
 #include "ray_options.hpp"
 #include "ray_plot.hpp"
@@ -120,7 +121,7 @@ std::vector<Ray> chosen_rays(const Options& options, const Scene& scene, bool de
 
 int ray_command(const std::vector<std::string>& args) {
     const Options options(args, {"--origin", "--dir", "--object", "--method", "--newton-from", "--rays", "--plot",
-                                 "--compare", "--compare-object", "--pixel"},
+                                 "--compare", "--compare-object", "--pixel", "--include-path"},
                           {"-h", "--help", "--json"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(ray_usage, stdout);
@@ -134,7 +135,7 @@ int ray_command(const std::vector<std::string>& args) {
     const std::vector<Method> methods = chosen_methods(options);
     const std::optional<double> newton_from = number_option(options, "--newton-from");
 
-    const Scene scene = default_scene_used ? default_scene() : load_scene(options.positional()[0]);
+    const Scene scene = default_scene_used ? default_scene() : load_scene_file(options.positional()[0], options);
     const std::vector<Ray> rays = chosen_rays(options, scene, default_scene_used);
     const PlacedObject placed = find_object(scene, options.value("--object"));
     const RaySubject subject{default_scene_used ? "<default>" : options.positional()[0], placed.name(), newton_from};
@@ -147,7 +148,7 @@ int ray_command(const std::vector<std::string>& args) {
     std::optional<ComparedFunction> compared;
     if (const auto file = options.value("--compare")) {
         if (!plot_file) throw UsageError("--compare adds a curve to the plot: give --plot too");
-        compare_scene = load_scene(*file);
+        compare_scene = load_scene_file(*file, options);
         const PlacedObject other = find_object(*compare_scene, options.value("--compare-object"));
         if (!other.to_scene.is_identity() || !placed.to_scene.is_identity())
             throw UsageError("--compare draws both objects along one ray: neither may be transformed");

@@ -87,7 +87,7 @@ SlicePlane plane_from(const Options& options, const std::optional<Box3>& bounds)
 
 int slice_command(const std::vector<std::string>& args) {
     const Options options(args, {"-o", "--output", "--format", "--size", "--axis", "--at", "--region", "--shading", "--object",
-                                 "--threads"},
+                                 "--threads", "--include-path"},
                           {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(slice_usage().c_str(), stdout);
