@@ -25,7 +25,8 @@ constexpr const char* mesh_usage = R"(Usage: zeroset mesh INPUT -o OUT.stl|.obj|
 
 Writes a triangle mesh of the surface f = 0 of INPUT: a .vm model (fidget's
 format, meshed over the cube [-1, 1]³ unless --region says otherwise) or a
-scene file (.zs), whose object (--object, default its first) is meshed
+scene file (.zs, or a POV-Ray .pov with --include-path DIRS for its
+#includes), whose object (--object, default its first) is meshed
 within its bounds and placed as the scene places it.
 
 The bounds are split as an octree; cells where interval arithmetic proves
@@ -97,7 +98,7 @@ int mesh_command(const std::vector<std::string>& args) {
         box = {{region->first, region->first, region->first}, {region->second, region->second, region->second}};
     } else if (input.bounds) {
         box = *input.bounds;
-    } else if (options.positional()[0].ends_with(".zs")) {
+    } else if (!options.positional()[0].ends_with(".vm")) {  // a scene's object
         throw UsageError("the object has no bounds (a plane, say): a mesh needs a finite region");
     }
 

@@ -32,7 +32,8 @@ std::string slice_usage() {
 
 Draws f on a plane: a square of the plane normal to an axis, sampled at
 the pixel centres. INPUT is a .vm model (fidget's format) or a scene file
-(.zs), whose object is sliced in its own space (before its transforms).
+(.zs, or a POV-Ray .pov with --include-path DIRS for its #includes), whose
+object is sliced in its own space (before its transforms).
 By default inside (f < 0) is black and outside white; with --shading value,
 inside is blue, outside orange, banded by the value of f, and the zero
 contour is black. Where f is undefined (NaN) the pixel is magenta.
