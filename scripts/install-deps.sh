@@ -16,6 +16,7 @@ packages=(
   python3-dev pybind11-dev            # the Python module, for Debian's python3
   python3-numpy python3-pytest        # …its arrays and its tests
   povray povray-examples              # POV-Ray's include files and sample scenes: the importer's corpus test and comparisons
+  libopenmpi-dev openmpi-bin          # distributed rendering (mpirun -n N zeroset render; docs/distributed.md)
 )
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang libclang-rt-dev)      # libFuzzer, ASan, UBSan

@@ -9,4 +9,8 @@ namespace zeroset::cli {
 /// Installs the handlers; call once, first thing in main().
 void handle_interrupts();
 
+/// In a distributed render: rank 0 explains that mpirun ended the job
+/// (another rank failed); the other ranks stay silent, leaving it to rank 0.
+void explain_termination_as_rank(int rank);
+
 }  // namespace zeroset::cli

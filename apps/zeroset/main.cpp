@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "distributed_launch.hpp"
 #include "interrupts.hpp"
 #include "options.hpp"
 #include "zeroset/scene/wording.hpp"
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
         }
         if (args[0] == "--version") {
             std::puts("zeroset " ZEROSET_VERSION);
+            std::puts(zeroset::cli::mpi_version_line().c_str());
             return 0;
         }
         const std::vector<std::string> rest(args.begin() + 1, args.end());

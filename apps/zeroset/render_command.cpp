@@ -3,27 +3,21 @@
 // options, the output's format and place, the scene — is checked first, and
 // the image is written atomically, so a failure never leaves a partial file.
 #include <cstdio>
-#include <filesystem>
-#include <optional>
-#include <stdexcept>
 #include <string>
 
 #include "commands.hpp"
+#include "distributed_launch.hpp"
 #include "image_output.hpp"
 #include "options.hpp"
 #include "progress_bar.hpp"
-#include "ray_options.hpp"
+#include "render_job.hpp"
 #include "scene_input.hpp"
 #include "zeroset/io/image_writer.hpp"
 #include "zeroset/render/renderer.hpp"
-#include "zeroset/scene/load_scene.hpp"
 
 namespace zeroset::cli {
 
 namespace {
-
-/// The most frames one render command makes.
-constexpr int max_frames = 100000;
 
 std::string render_usage() {
     return R"(Usage: zeroset render [SCENE] [options]
@@ -74,84 +68,29 @@ A progress bar is drawn on stderr when it is a terminal; a one-line summary
 )";
 }
 
-/// The render's settings from the options, defaulting to the scene's.
-RenderSettings settings_for(const Options& options, const Scene& scene, bool layers) {
-    RenderSettings settings;
-    settings.width = options.integer("--width").value_or(scene.image.width);
-    settings.height = options.integer("--height").value_or(scene.image.height);
-    settings.samples_per_pixel = options.integer("--spp").value_or(scene.image.samples_per_pixel);
-    settings.threads = options.integer("--threads").value_or(0);
-    settings.cone_antialiasing = scene.image.cone_antialiasing;
-    if (const auto antialias = options.value("--antialias")) {
-        try {
-            settings.cone_antialiasing = cone_antialiasing_named(*antialias);
-        } catch (const std::invalid_argument& e) {
-            throw UsageError(e.what());
-        }
-    }
-    settings.layers = layers;
-    settings.method = options.choice("--method", "method", all_methods(), method_name);
-    settings.solver = options.choice("--solver", "polynomial solver", all_polynomial_solvers(), polynomial_solver_name);
-    settings.normals = options.choice("--normals", "normal mode", all_normal_modes(), normal_mode_name);
-    settings.partition = options.choice("--partition", "partition", all_partitions(), partition_name);
-    settings.max_evaluations = options.count("--max-evaluations");
-    validate(settings);
-    return settings;
-}
-
-/// The clock of each frame: --clock's value, or 0 → 1 in equal steps over --frames.
-std::vector<double> frame_clocks(const Options& options) {
-    const int frames = options.integer("--frames").value_or(1);
-    if (frames < 1 || frames > max_frames)
-        throw UsageError("--frames must be between 1 and " + std::to_string(max_frames) + ", got " +
-                         std::to_string(frames));
-    const std::optional<double> clock = number_option(options, "--clock");
-    if (clock && options.value("--frames")) throw UsageError("give --clock or --frames, not both");
-    if (frames == 1) return {clock.value_or(0.0)};
-    std::vector<double> clocks;
-    for (int i = 0; i < frames; ++i) clocks.push_back(static_cast<double>(i) / (frames - 1));
-    return clocks;
-}
-
-Scene load(const std::optional<std::filesystem::path>& scene_file, const Options& options, double clock, bool quiet) {
-    return scene_file ? load_scene_file(*scene_file, options, clock, quiet) : default_scene();
-}
-
 }  // namespace
 
 int render_command(const std::vector<std::string>& args) {
-    std::vector<std::string> valued = {"--width",     "--height",    "--spp",    "--antialias", "--threads",         "--method",
-                                       "--solver",    "--normals",   "--partition", "--max-evaluations", "--frames",
-                                       "--clock"};
-    valued.insert(valued.end(), scene_input_options.begin(), scene_input_options.end());
-    valued.insert(valued.end(), image_output_options.begin(), image_output_options.end());
-    const Options options(args, valued, {"-h", "--help", "-q", "--quiet"});
+    const Options options(args, render_valued_options(), {"-h", "--help", "-q", "--quiet"});
     if (options.has("-h") || options.has("--help")) {
         std::fputs(render_usage().c_str(), stdout);
         return 0;
     }
-    if (options.positional().size() > 1) throw UsageError("render takes at most one scene file");
-
-    const std::optional<std::filesystem::path> scene_file =
-        options.positional().empty() ? std::nullopt : std::optional(std::filesystem::path(options.positional()[0]));
-    const std::vector<double> clocks = frame_clocks(options);
-    if (!scene_file && (options.value("--clock") || options.value("--frames")))
-        throw UsageError("--clock and --frames animate a scene file; the built-in scene has no clock");
-    const ImageOutput output(options, scene_file ? scene_file->stem().string() + ".png" : "zeroset.png",
-                             static_cast<int>(clocks.size()));
-    const bool quiet = options.has("-q") || options.has("--quiet");
-    const bool layers = output.format() == ImageFormat::Exr;
-
-    for (std::size_t frame = 0; frame < clocks.size(); ++frame) {
-        const int number = clocks.size() > 1 ? static_cast<int>(frame) : -1;
-        if (frame > 0) output.check(number);
-        const Scene scene = load(scene_file, options, clocks[frame], quiet || frame > 0);
-        RenderSettings settings = settings_for(options, scene, layers);
+    const RenderJob job(options);
+    if (distributed_launch()) return render_distributed(job);
+    TileLog log;
+    for (std::size_t frame = 0; frame < job.frame_count(); ++frame) {
+        const int number = job.frame_number(frame);
+        if (frame > 0) job.output().check(number);
+        const Scene scene = job.load_frame(frame, job.quiet() || frame > 0);
+        RenderSettings settings = job.settings_for(scene);
         ProgressBar bar;
-        if (!quiet && bar.enabled()) {
+        if (!job.quiet() && bar.enabled()) {
             settings.on_progress = [&bar](int done, int total) { bar.update(done, total); };
             settings.on_prepare_progress = [&bar](int done, int total) { bar.update(done, total, "building octree"); };
         }
+        if (job.tile_log())
+            settings.on_tile = [&log, frame](const TileRect& tile, const TileWork& work) { log.add(frame, 0, tile, work); };
         RenderResult result = [&] {
             try {
                 return render(scene, settings);
@@ -161,13 +100,14 @@ int render_command(const std::vector<std::string>& args) {
             }
         }();
         bar.finish();
-        output.write(result.image, number);
+        job.output().write(result.image, number);
         if (frame == 0)  // the same scene's warnings for every frame: once is enough
             for (const std::string& warning : result.stats.warnings) std::fprintf(stderr, "zeroset: warning: %s\n", warning.c_str());
-        if (!quiet)
-            std::fprintf(stderr, "zeroset: wrote %s — %s\n", output.name(number).c_str(),
+        if (!job.quiet())
+            std::fprintf(stderr, "zeroset: wrote %s — %s\n", job.output().name(number).c_str(),
                          summary_line(result.stats).c_str());
     }
+    if (job.tile_log()) log.write(*job.tile_log());
     return 0;
 }
 

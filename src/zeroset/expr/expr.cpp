@@ -53,7 +53,38 @@ InternTable& table() {
     return *t;
 }
 
+/// The structural hash of a node from its parts and its operands' hashes.
+std::uint64_t shape_of(Op op, int exponent, std::uint64_t value_bits, const ExprNode* a, const ExprNode* b) {
+    std::uint64_t h = 0x243f6a8885a308d3ULL;
+    const auto mix = [&h](std::uint64_t v) {
+        h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+        h *= 0xff51afd7ed558ccdULL;
+        h ^= h >> 33;
+    };
+    mix(static_cast<std::uint64_t>(op));
+    mix(static_cast<std::uint64_t>(static_cast<std::uint32_t>(exponent)));
+    mix(value_bits);
+    mix(a ? a->shape : 0);
+    mix(b ? b->shape : 0);
+    return h;
+}
+
+/// A total order on structures that depends on them alone: by shape, and
+/// on the (unseen in practice) collision of two shapes, by their parts.
+bool structurally_before(const ExprNode* a, const ExprNode* b) {
+    if (a == b || !b) return false;
+    if (!a) return true;
+    if (a->shape != b->shape) return a->shape < b->shape;
+    if (a->op != b->op) return a->op < b->op;
+    if (a->exponent != b->exponent) return a->exponent < b->exponent;
+    const auto va = std::bit_cast<std::uint64_t>(a->value), vb = std::bit_cast<std::uint64_t>(b->value);
+    if (va != vb) return va < vb;
+    if (a->a != b->a) return structurally_before(a->a.get(), b->a.get());
+    return structurally_before(a->b.get(), b->b.get());
+}
+
 std::atomic<std::size_t> live_nodes{0};
+std::atomic<std::uint64_t> nodes_made{0};
 std::atomic<std::size_t> node_limit{4'000'000};
 
 }  // namespace
@@ -72,7 +103,8 @@ Expr Expr::intern(Op op, double value, int n, const Expr* a, const Expr* b) {
     const bool constant_valued =
         !is_var && (!a || a->is_constant_valued()) && (!b || b->is_constant_valued());
     // Built in place (no temporary, whose destructor would count as a node freed).
-    auto node = std::make_shared<const ExprNode>(op, n, value, constant_valued, a ? a->node_ : nullptr,
+    const std::uint64_t shape = shape_of(op, n, key.value_bits, a ? a->node_.get() : nullptr, b ? b->node_.get() : nullptr);
+    auto node = std::make_shared<const ExprNode>(op, n, value, constant_valued, shape, nodes_made++, a ? a->node_ : nullptr,
                                                  b ? b->node_ : nullptr);
     t.nodes[key] = node;
     live_nodes.fetch_add(1, std::memory_order_relaxed);
@@ -113,6 +145,7 @@ Expr::Expr() : Expr(0.0) {}
 Expr::Expr(double constant) : node_(intern(Op::Const, constant, 0, nullptr, nullptr).node_) {}
 
 Op Expr::op() const { return node_->op; }
+std::uint64_t Expr::creation_order() const { return node_->serial; }
 double Expr::value() const { return node_->value; }
 int Expr::exponent() const { return node_->exponent; }
 Expr Expr::operand(int i) const { return Expr(i == 0 ? node_->a : node_->b); }
@@ -184,10 +217,11 @@ Expr Expr::make(Op op, const Expr& a, const Expr& b, int n) {
         return Expr(apply_op<double>(op, a.value(), arity == 2 ? b.value() : 0.0, n));
     }
     // Operand order does not matter for these: keep one canonical order so
-    // that a + b and b + a share a node.
+    // that a + b and b + a share a node — by structure, not by address, so
+    // that it is the same in every process.
     const bool commutative = op == Op::Add || op == Op::Mul || op == Op::Min || op == Op::Max || op == Op::Hypot ||
                              op == Op::LogSumExp;
-    if (commutative && std::less<const void*>{}(b.id(), a.id())) return intern(op, 0.0, n, &b, &a);
+    if (commutative && structurally_before(b.node_.get(), a.node_.get())) return intern(op, 0.0, n, &b, &a);
     return intern(op, 0.0, n, &a, arity == 2 ? &b : nullptr);
 }
 

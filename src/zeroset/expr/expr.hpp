@@ -34,6 +34,8 @@ public:
     /// True when no x, y or z occurs in the expression.
     [[nodiscard]] bool is_constant_valued() const;
 
+    /// When the node was made, relative to the others (ExprNode::serial).
+    [[nodiscard]] std::uint64_t creation_order() const;
     /// Identity of the shared node (equal ids ⇔ structurally equal expressions).
     [[nodiscard]] const void* id() const { return node_.get(); }
     friend bool operator==(const Expr& a, const Expr& b) { return a.node_ == b.node_; }
@@ -58,15 +60,24 @@ private:
 };
 
 struct ExprNode {
-    ExprNode(Op op_, int exponent_, double value_, bool constant_valued_, std::shared_ptr<const ExprNode> a_,
-             std::shared_ptr<const ExprNode> b_)
-        : op(op_), exponent(exponent_), value(value_), constant_valued(constant_valued_), a(std::move(a_)),
-          b(std::move(b_)) {}
+    ExprNode(Op op_, int exponent_, double value_, bool constant_valued_, std::uint64_t shape_, std::uint64_t serial_,
+             std::shared_ptr<const ExprNode> a_, std::shared_ptr<const ExprNode> b_)
+        : op(op_), exponent(exponent_), value(value_), constant_valued(constant_valued_), shape(shape_),
+          serial(serial_), a(std::move(a_)), b(std::move(b_)) {}
 
     Op op;
     int exponent;  // Powi only
     double value;  // Const only
     bool constant_valued;
+    /// A hash of the structure alone (never of addresses): the same in every
+    /// process, so that the canonical order of commutative operands — and
+    /// with it every rounding — is too (a distributed render's ranks must
+    /// compute the same pixels).
+    std::uint64_t shape;
+    /// The order nodes were made in, process-wide: a model's own order,
+    /// which the tape keeps for its schedule (tape.cpp). Unlike `shape` it
+    /// may differ between processes, so nothing numeric depends on it.
+    std::uint64_t serial;
     std::shared_ptr<const ExprNode> a, b;  // operands (null past the arity)
 
     /// Releases operands iteratively: a chain of 100 000 nodes must not

@@ -10,7 +10,10 @@ namespace zeroset {
 
 namespace {
 
-/// The DAG's nodes in post order (operands before users), each once.
+/// The DAG's nodes in post order (operands before users), each once; of two
+/// operands, the one made first is walked first. Models are written in a
+/// good schedule, so keeping their order keeps few values live at once;
+/// the values themselves do not depend on this order.
 std::vector<Expr> topological_order(const Expr& root) {
     std::vector<Expr> order;
     std::unordered_map<const void*, bool> visited;  // false: on stack, true: emitted
@@ -28,8 +31,10 @@ std::vector<Expr> topological_order(const Expr& root) {
         if (visited.contains(e.id())) continue;
         visited[e.id()] = false;
         stack.emplace_back(e, true);
-        for (int i = op_arity(e.op()) - 1; i >= 0; --i) {
-            const Expr child = e.operand(i);
+        const int arity = op_arity(e.op());
+        const bool swap = arity == 2 && e.operand(1).creation_order() < e.operand(0).creation_order();
+        for (int i = arity - 1; i >= 0; --i) {
+            const Expr child = e.operand(swap ? 1 - i : i);
             if (!visited.contains(child.id())) stack.emplace_back(child, false);
         }
     }

@@ -487,8 +487,7 @@ PovValue PovParser::call_builtin(const PovToken& name) {
     }
     if (f == "file_exists") {
         need(1, 1);
-        std::error_code error;
-        return PovValue::number(std::filesystem::exists(resolve_path(files_[frames_.back().file]->dir, str(0)), error) ? 1.0 : 0.0);
+        return PovValue::number(regular_file_exists(resolve_path(files_[frames_.back().file]->dir, str(0))) ? 1.0 : 0.0);
     }
     fail(name, "the function " + f + "(…) is not supported");
 }

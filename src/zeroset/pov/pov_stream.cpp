@@ -359,8 +359,7 @@ void PovParser::include(const PovToken& keyword) {
     for (const std::string& dir : include_dirs_) add(dir);
     for (const auto& dir : places) {
         const std::filesystem::path path = resolve_path(dir, written);
-        std::error_code error;
-        if (!std::filesystem::is_regular_file(path, error)) continue;
+        if (!regular_file_exists(path)) continue;
         std::string text;
         try {
             text = read_text_file(path);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "zeroset/accel/octree.hpp"
+#include "zeroset/render/tile_work.hpp"
 #include "zeroset/trace/method.hpp"
 
 namespace zeroset {
@@ -38,6 +39,9 @@ struct RenderSettings {
     /// Called after every finished tile with (tiles done, tiles in all), from
     /// one thread at a time.
     std::function<void(int, int)> on_progress;
+    /// Called after every finished tile with its place and what it cost,
+    /// from one thread at a time (`zeroset render --tile-log`).
+    std::function<void(const TileRect&, const TileWork&)> on_tile;
     /// Called as an object's octree is built, before tracing, with (parts
     /// done, parts in all), from one thread at a time.
     std::function<void(int, int)> on_prepare_progress;

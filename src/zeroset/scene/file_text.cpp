@@ -1,5 +1,9 @@
-// Whole-file reads with readable failure reasons.
+// Whole-file reads with readable failure reasons; each question is answered
+// from a replayed snapshot when the thread has one, and recorded when it
+// records (file_snapshot.hpp).
 #include "zeroset/scene/file_text.hpp"
+
+#include "zeroset/scene/file_snapshot.hpp"
 
 #include <cerrno>
 #include <fstream>
@@ -22,9 +26,7 @@ std::string kind_of(std::filesystem::file_type type) {
     }
 }
 
-}  // namespace
-
-std::string read_text_file(const std::filesystem::path& path) {
+std::string read_from_disk(const std::filesystem::path& path) {
     std::error_code status_error;
     const auto status = std::filesystem::status(path, status_error);
     if (status.type() == std::filesystem::file_type::not_found)
@@ -51,10 +53,40 @@ std::string read_text_file(const std::filesystem::path& path) {
     return text;
 }
 
+}  // namespace
+
+std::string read_text_file(const std::filesystem::path& path) {
+    if (const FileSnapshot* replay = detail::replay_snapshot()) {
+        const auto it = replay->texts.find(path.string());
+        if (it == replay->texts.end()) throw FileReadError("it is not among the files rank 0 sent");
+        return it->second;
+    }
+    std::string text = read_from_disk(path);
+    if (FileSnapshot* record = detail::recording_snapshot()) record->texts[path.string()] = text;
+    return text;
+}
+
+bool regular_file_exists(const std::filesystem::path& path) {
+    if (const FileSnapshot* replay = detail::replay_snapshot()) {
+        const auto it = replay->regular.find(path.string());
+        return it != replay->regular.end() && it->second;
+    }
+    std::error_code error;
+    const bool regular = std::filesystem::is_regular_file(path, error);
+    if (FileSnapshot* record = detail::recording_snapshot()) record->regular[path.string()] = regular;
+    return regular;
+}
+
 std::filesystem::path canonical_path(const std::filesystem::path& path) {
+    if (const FileSnapshot* replay = detail::replay_snapshot()) {
+        const auto it = replay->canonical.find(path.string());
+        return it != replay->canonical.end() ? std::filesystem::path(it->second) : path;
+    }
     std::error_code error;
     std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
-    return error ? path : canonical;
+    if (error) canonical = path;
+    if (FileSnapshot* record = detail::recording_snapshot()) record->canonical[path.string()] = canonical.string();
+    return canonical;
 }
 
 }  // namespace zeroset

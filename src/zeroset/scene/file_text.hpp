@@ -24,6 +24,9 @@ inline constexpr std::uintmax_t max_text_file_bytes = std::uintmax_t{256} << 20;
 /// large, unreadable).
 std::string read_text_file(const std::filesystem::path& path);
 
+/// Whether the path names a regular file (false when it cannot be told).
+bool regular_file_exists(const std::filesystem::path& path);
+
 /// The path with symbolic links and dot segments resolved (as far as it
 /// exists), naming a file the same way however it was reached; the path
 /// itself if that fails.

@@ -1,0 +1,15 @@
+// A rank other than 0 in a distributed render: it loads the scene from the
+// files rank 0 sent, traces the tiles rank 0 hands it, and sends them back,
+// until rank 0 says the job is done or has failed.
+#pragma once
+
+#include "../render_job.hpp"
+#include "zeroset/scene/file_snapshot.hpp"
+
+namespace zeroset::cli {
+
+/// Runs the rank's part; returns its exit status: 0, also when the job
+/// failed, which rank 0 reports and ends with its own status.
+int run_worker_rank(const RenderJob& job, const FileSnapshot& files);
+
+}  // namespace zeroset::cli

@@ -1,0 +1,234 @@
+// Per-pixel work of a tile, and the early stop shared by a frame's workers.
+#include "zeroset/render/frame_render.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "zeroset/render/pixel_samples.hpp"
+#include "zeroset/render/shading.hpp"
+
+namespace zeroset {
+
+namespace {
+
+/// What a pixel's samples saw nearest: for the image's depth and normal layers.
+struct NearestSample {
+    float depth = std::numeric_limits<float>::infinity();
+    Vec3f normal{0, 0, 0};
+
+    void offer(const SurfaceHit& hit) {
+        if (!(hit.t < depth)) return;
+        depth = static_cast<float>(hit.t);
+        normal = {static_cast<float>(hit.normal.x), static_cast<float>(hit.normal.y), static_cast<float>(hit.normal.z)};
+    }
+};
+
+void check_camera(const Camera& camera) {
+    const Vec3d view = camera.at - camera.from;
+    if (!(length(view) > 0.0)) throw RenderError("the camera's `from` and `at` are the same point");
+    if (!(length(cross(camera.up, view)) > 1e-12 * length(view) * length(camera.up)))
+        throw RenderError("the camera's `up` is parallel to its view direction");
+}
+
+std::string budget_message(std::uint64_t budget, bool by_default) {
+    std::ostringstream message;
+    message << "the render was stopped when it had spent its budget of " << budget << " evaluations of the surfaces";
+    if (by_default)
+        message << " (" << evaluations_per_camera_ray << " per camera ray, at least " << least_evaluation_budget << ")";
+    message << ": an object is far too costly for its method here — a surface with detail finer than a pixel "
+               "everywhere, say, or bounds far larger than the surface. Try another method or tighter bounds, or "
+               "raise the budget (--max-evaluations)";
+    return message.str();
+}
+
+/// The tracer's counts past `before` (evaluation_limit left out).
+TraceCounters counted_since(const TraceCounters& now, const TraceCounters& before) {
+    TraceCounters d;
+    d.point_evaluations = now.point_evaluations - before.point_evaluations;
+    d.interval_evaluations = now.interval_evaluations - before.interval_evaluations;
+    d.gradient_evaluations = now.gradient_evaluations - before.gradient_evaluations;
+    d.nan_evaluations = now.nan_evaluations - before.nan_evaluations;
+    d.failed_queries = now.failed_queries - before.failed_queries;
+    d.cell_visits = now.cell_visits - before.cell_visits;
+    d.blob_kernels = now.blob_kernels - before.blob_kernels;
+    return d;
+}
+
+/// Checks, then prepares: the settings and camera before any costly work.
+const RenderSettings& checked(const Scene& scene, const RenderSettings& settings) {
+    validate(settings);
+    check_camera(scene.camera);
+    require_in_range(scene.image.reflection_depth, 0, max_reflection_depth, "the reflection depth");
+    return settings;
+}
+
+}  // namespace
+
+std::vector<TileRect> image_tiles(int width, int height) {
+    std::vector<TileRect> tiles;
+    for (int y = 0; y < height; y += tile_side)
+        for (int x = 0; x < width; x += tile_side)
+            tiles.push_back({x, y, std::min(x + tile_side, width), std::min(y + tile_side, height)});
+    return tiles;
+}
+
+TileWork& TileWork::operator+=(const TileWork& o) {
+    camera_rays += o.camera_rays, hits += o.hits, shadow_rays += o.shadow_rays, reflection_rays += o.reflection_rays;
+    trace += o.trace;
+    cone += o.cone;
+    seconds += o.seconds;
+    return *this;
+}
+
+FrameRender::FrameRender(const Scene& scene, const RenderSettings& settings)
+    : scene_(scene),
+      settings_(checked(scene, settings)),
+      prepared_(scene, {settings.method, settings.solver, settings.normals, settings.partition, settings.width,
+                        settings.height, settings.on_prepare_progress}),
+      camera_(scene.camera, settings.width, settings.height),
+      tiles_(image_tiles(settings.width, settings.height)),
+      budget_(settings.max_evaluations.value_or(default_evaluation_budget(settings))) {
+    if (settings.cone_antialiasing) distance_.emplace(scene);
+    prepare_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
+}
+
+FrameRender::~FrameRender() = default;
+
+FrameRender::Worker::Worker(FrameRender& frame, int threads_sharing_the_budget)
+    : tracer_(frame.prepared_), threads_(static_cast<std::uint64_t>(std::max(1, threads_sharing_the_budget))) {
+    if (frame.distance_) cone_.emplace(*frame.distance_, frame.camera_.footprint_radius());
+    frame.allow(*this, frame.spent_);
+}
+
+/// A worker's allowance until its next report: its share of what is left,
+/// so that the workers together stay within the budget while their queries
+/// run (TraceCounters::evaluation_limit).
+void FrameRender::allow(Worker& worker, std::uint64_t total) const {
+    const std::uint64_t left = budget_ - std::min(total, budget_);
+    worker.tracer_.counters().evaluation_limit = worker.tracer_.counters().evaluations() + left / worker.threads_;
+}
+
+/// Adds the worker's evaluations since its last report, after every pixel.
+/// A worker past its allowance has had queries fail, so the render is over
+/// budget even if the others left some unspent.
+void FrameRender::report(Worker& worker) {
+    const TraceCounters& counters = worker.tracer_.counters();
+    const std::uint64_t now = counters.evaluations();
+    const std::uint64_t since = now - worker.evaluations_reported_;
+    const std::uint64_t total = spent_.fetch_add(since) + since;
+    worker.evaluations_reported_ = now;
+    if (total > budget_ || counters.over_limit()) stop_over_budget();
+    if (const auto& nan = worker.tracer_.first_nan()) record_nan(*nan);
+    allow(worker, total);
+}
+
+void FrameRender::stop_over_budget() {
+    over_budget_ = true;
+    stop_ = true;
+}
+
+void FrameRender::record_nan(const TraceScratch::NanRecord& nan) {
+    std::lock_guard lock(failure_mutex_);
+    if (!nan_failure_) nan_failure_ = nan_message(nan);
+    stop_ = true;
+}
+
+void FrameRender::record_non_finite(int px, int py) {
+    std::lock_guard lock(failure_mutex_);
+    if (!non_finite_failure_)
+        non_finite_failure_ = "pixel (" + std::to_string(px) + ", " + std::to_string(py) +
+                              ") has no finite colour: light and material colours multiply past the largest float "
+                              "(3.4e38), or a material's colour pattern is NaN or infinite there; scale the colours "
+                              "down or fix the pattern";
+    stop_ = true;
+}
+
+std::optional<std::string> FrameRender::failure() const {
+    std::lock_guard lock(failure_mutex_);
+    if (nan_failure_) return nan_failure_;
+    if (over_budget_) return budget_message(budget_, !settings_.max_evaluations);
+    return non_finite_failure_;
+}
+
+TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into, int origin_x, int origin_y) {
+    const auto start = std::chrono::steady_clock::now();
+    constexpr double far = std::numeric_limits<double>::infinity();
+    const TileRect& tile = tiles_[index];
+    const int spp = settings_.samples_per_pixel;
+    const bool layers = into.has_layers();
+    SceneTracer& tracer = worker.tracer_;
+    ConeTracer* cone = worker.cone_ ? &*worker.cone_ : nullptr;
+    const TraceCounters before = tracer.counters();
+    ShadingCounters shading;
+    TileWork work;
+    for (int py = tile.y0; py < tile.y1; ++py) {
+        for (int px = tile.x0; px < tile.x1; ++px) {
+            if (stopped()) break;
+            Vec3d sum{};
+            NearestSample nearest;
+            for (int s = 0; s < spp; ++s) {
+                const SubPixel sub = pixel_sample(px, py, s, spp);
+                const Ray ray = camera_.ray(px, py, sub.x, sub.y);
+                ++work.camera_rays;
+                const auto hit = tracer.closest_hit(ray, far);
+                Vec3d seen = scene_.background;
+                if (hit) {
+                    ++work.hits;
+                    nearest.offer(*hit);
+                    seen = shade(tracer, ray, *hit, shading, scene_.image.reflection_depth);
+                }
+                if (cone)
+                    seen = cone->pixel(tracer, ray, hit, seen, shading, scene_.image.reflection_depth, work.cone);
+                sum += seen;
+            }
+            const Vec3d c = sum / static_cast<double>(spp);
+            const Vec3f pixel{static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
+            if (!(std::isfinite(pixel.x) && std::isfinite(pixel.y) && std::isfinite(pixel.z)))
+                record_non_finite(px, py);
+            const int ix = px - origin_x;
+            const int iy = py - origin_y;
+            into.at(ix, iy) = pixel;
+            if (layers) {
+                const std::size_t i = static_cast<std::size_t>(iy) * static_cast<std::size_t>(into.width) +
+                                      static_cast<std::size_t>(ix);
+                into.depth[i] = nearest.depth;
+                into.normals[i] = nearest.normal;
+            }
+            report(worker);
+        }
+    }
+    work.shadow_rays = shading.shadow_rays;
+    work.reflection_rays = shading.reflection_rays;
+    work.trace = counted_since(tracer.counters(), before);
+    work.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return work;
+}
+
+RenderStats FrameRender::finish(const TileWork& all_tiles, int threads, double seconds) const {
+    if (auto why = failure()) throw RenderError(*why);
+    RenderStats stats;
+    stats.camera_rays = all_tiles.camera_rays;
+    stats.hits = all_tiles.hits;
+    stats.shadow_rays = all_tiles.shadow_rays;
+    stats.reflection_rays = all_tiles.reflection_rays;
+    stats.counters = all_tiles.trace;
+    stats.cone = all_tiles.cone;
+    stats.width = settings_.width;
+    stats.height = settings_.height;
+    stats.samples_per_pixel = settings_.samples_per_pixel;
+    stats.cone_antialiasing = settings_.cone_antialiasing;
+    stats.threads = threads;
+    stats.seconds = seconds;
+    stats.prepare_seconds = prepare_seconds_;
+    stats.methods = prepared_.method_counts();
+    stats.partitions = prepared_.partition_summary();
+    stats.blobs = prepared_.blob_summary();
+    stats.warnings = scene_.warnings;
+    stats.warnings.insert(stats.warnings.end(), prepared_.warnings().begin(), prepared_.warnings().end());
+    return stats;
+}
+
+}  // namespace zeroset
