@@ -60,11 +60,17 @@ Options:
   --frames N          an animation: N frames with `clock` running from 0 to 1,
                       written as OUT_0000.png, OUT_0001.png, … (OUT's name with
                       the frame number before its extension)
+  --tile-log FILE     write what every 16x16 tile cost (place, rank, seconds,
+                      evaluations) to FILE as CSV
 )" + scene_input_help() + R"(  -q, --quiet         no progress bar and no summary line
   -h, --help          this text
 
 A progress bar is drawn on stderr when it is a terminal; a one-line summary
 (size, time, rays, hits, function evaluations) is printed at the end.
+
+Under mpirun (mpirun -n N zeroset render …), the ranks share the tiles and
+frames and rank 0 writes the same image one process would; see
+docs/distributed.md.
 )";
 }
 

@@ -20,7 +20,8 @@ rank, and what limits it: rank 0's loop or link (utilisation near 1), or
 the granularity of tiles (the last tiles finishing while other ranks idle).
 
 Usage: simulate.py TILES.csv [--threads 2] [--latency-us 0.5] [--bandwidth-mbps 5000]
-                            [--service-us 3] [--poll-us 200] [--ranks 1,2,4,...]
+                            [--service-us 3] [--poll-us 200] [--pixel-bytes 12]
+                            [--ranks 1,2,4,...]
 """
 import argparse
 import csv
@@ -38,7 +39,7 @@ def load_costs(path):
     return [(float(r["seconds"]), int(r["width"]) * int(r["height"])) for r in rows]
 
 
-def simulate(tiles, ranks, threads, in_flight, latency, bandwidth, service, poll):
+def simulate(tiles, ranks, threads, in_flight, latency, bandwidth, service, poll, pixel_bytes):
     """The makespan of the job, and rank 0's loop and link utilisation."""
     header = 200  # bytes of a tile result besides its pixels
     events = []  # (time, order, kind, data)
@@ -91,7 +92,7 @@ def simulate(tiles, ranks, threads, in_flight, latency, bandwidth, service, poll
             if rank == 0:
                 push(sent + poll / 2, "arrived", data)
             else:
-                size = header + 28 * tiles[tile][1]
+                size = header + pixel_bytes * tiles[tile][1]
                 arrival = max(sent + latency, link_free) + size / bandwidth
                 link_busy += size / bandwidth
                 link_free = arrival
@@ -125,6 +126,7 @@ def main():
     p.add_argument("--bandwidth-mbps", type=float, default=5000.0)
     p.add_argument("--service-us", type=float, default=3.0)
     p.add_argument("--poll-us", type=float, default=200.0, help="zeroset's polling pause (200 µs)")
+    p.add_argument("--pixel-bytes", type=int, default=12, help="per pixel sent: 12 (RGB floats), 28 with EXR layers")
     p.add_argument("--ranks", default="1,2,4,8,16,32,64,128,256,512,1024")
     a = p.parse_args()
     tiles = load_costs(a.log)
@@ -136,7 +138,7 @@ def main():
     one = None
     for ranks in [int(r) for r in a.ranks.split(",")]:
         end, loop, link = simulate(tiles, ranks, a.threads, a.in_flight, a.latency_us * 1e-6,
-                                   a.bandwidth_mbps * 1e6, a.service_us * 1e-6, a.poll_us * 1e-6)
+                                   a.bandwidth_mbps * 1e6, a.service_us * 1e-6, a.poll_us * 1e-6, a.pixel_bytes)
         one = one or end
         efficiency = one / (ranks * end)
         per_thread = len(tiles) / (ranks * a.threads)
