@@ -14,6 +14,10 @@ namespace zeroset::cli {
 /// of two or more.
 bool distributed_launch();
 
+/// This process's rank as the launcher gave it (0 when not launched as one
+/// of several), known before MPI starts.
+int launched_rank();
+
 /// Renders the job with every rank of the MPI job; rank 0 writes the
 /// images. Returns the exit status; throws on rank 0 for a failure of any
 /// rank. Without MPI built in, throws UsageError.

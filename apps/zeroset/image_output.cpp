@@ -21,7 +21,8 @@ std::string image_output_help(const std::string& default_name) {
            "  --format F          png, ppm, pfm or exr: the format for '-o -' (default png)\n";
 }
 
-ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& default_name, int frames) {
+ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& default_name, int frames,
+                         bool check_place) {
     const bool numbered = frames > 1;
     if (numbered) digits_ = std::max<int>(4, static_cast<int>(std::to_string(frames - 1).size()));
     if (options.value("-o") && options.value("--output")) throw UsageError("give -o or --output, not both");
@@ -43,7 +44,7 @@ ImageOutput::ImageOutput(const Options& options, const std::filesystem::path& de
     if (named && *named != format_)
         throw UsageError("--format does not match the extension of " + path_.string() +
                          " (--format is for '-o -'; the extension names a file's format)");
-    check(numbered ? 0 : -1);
+    if (check_place) check(numbered ? 0 : -1);
 }
 
 void ImageOutput::check(int frame) const {

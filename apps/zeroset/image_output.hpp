@@ -25,7 +25,10 @@ public:
     /// With `frames` > 1, a sequence: each frame's file name is numbered (and
     /// standard output is refused). Throws UsageError for a bad name or
     /// format, ImageWriteError when the (first) file could not be written.
-    ImageOutput(const Options& options, const std::filesystem::path& default_name, int frames = 1);
+    /// `check_place` false skips the check that the file could be written
+    /// here (a distributed render's other ranks, which write nothing).
+    ImageOutput(const Options& options, const std::filesystem::path& default_name, int frames = 1,
+                bool check_place = true);
 
     [[nodiscard]] ImageFormat format() const { return format_; }
     /// The file name — with `_0042` before the extension for frame 42 of a

@@ -82,7 +82,10 @@ int render_command(const std::vector<std::string>& args) {
         std::fputs(render_usage().c_str(), stdout);
         return 0;
     }
-    const RenderJob job(options);
+    if (distributed_launch() && (options.value("-o") == "-" || options.value("--output") == "-"))
+        throw UsageError("under mpirun, write the image to a file (-o FILE): mpirun gives each rank a terminal as "
+                         "standard output, not the pipe it was started with");
+    const RenderJob job(options, launched_rank() == 0);  // only rank 0 writes
     if (distributed_launch()) return render_distributed(job);
     TileLog log;
     for (std::size_t frame = 0; frame < job.frame_count(); ++frame) {

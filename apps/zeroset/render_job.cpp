@@ -45,16 +45,19 @@ std::vector<std::string> render_valued_options() {
     return valued;
 }
 
-RenderJob::RenderJob(const Options& options)
+RenderJob::RenderJob(const Options& options, bool writes_files)
     : options_(options),
       scene_file_(scene_file_of(options)),
       clocks_(frame_clocks(options)),
       output_(options, scene_file_ ? scene_file_->stem().string() + ".png" : "zeroset.png",
-              static_cast<int>(clocks_.size())),
+              static_cast<int>(clocks_.size()), writes_files),
       quiet_(options.has("-q") || options.has("--quiet")) {
     if (!scene_file_ && (options.value("--clock") || options.value("--frames")))
         throw UsageError("--clock and --frames animate a scene file; the built-in scene has no clock");
-    if (const auto log = options.value("--tile-log")) tile_log_ = *log;
+    if (const auto log = options.value("--tile-log")) {
+        tile_log_ = *log;
+        if (writes_files) TileLog::check(*tile_log_);
+    }
 }
 
 int RenderJob::frame_number(std::size_t frame) const { return clocks_.size() > 1 ? static_cast<int>(frame) : -1; }

@@ -19,8 +19,10 @@ namespace zeroset::cli {
 
 class RenderJob {
 public:
-    /// Reads and checks the options (UsageError, ImageWriteError).
-    explicit RenderJob(const Options& options);
+    /// Reads and checks the options (UsageError, ImageWriteError), and that
+    /// the image and tile log could be written — unless `writes_files` is
+    /// false: a distributed render's other ranks, whose folders may differ.
+    explicit RenderJob(const Options& options, bool writes_files = true);
 
     [[nodiscard]] std::size_t frame_count() const { return clocks_.size(); }
     /// The number in a frame's file name; -1 when there is only one frame.

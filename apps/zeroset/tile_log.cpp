@@ -9,6 +9,12 @@
 
 namespace zeroset::cli {
 
+void TileLog::check(const std::filesystem::path& path) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw FileWriteError(path, "is a directory");
+    const AtomicFile probe(path);  // created now, removed when it goes out of scope
+}
+
 void TileLog::add(std::size_t frame, int rank, const TileRect& tile, const TileWork& work) {
     char row[256];
     std::snprintf(row, sizeof row, "%zu,%d,%d,%d,%d,%d,%.9f,%llu,%llu,%llu\n", frame, tile.x0, tile.y0, tile.width(),

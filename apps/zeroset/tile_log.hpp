@@ -12,6 +12,10 @@ namespace zeroset::cli {
 
 class TileLog {
 public:
+    /// Throws FileWriteError unless the log could be written at `path` now
+    /// (checked before rendering, as the image's place is).
+    static void check(const std::filesystem::path& path);
+
     /// Records one tile of `frame`, traced by `rank` (0 outside a distributed render).
     void add(std::size_t frame, int rank, const TileRect& tile, const TileWork& work);
     /// Writes the rows, after a header line, atomically (FileWriteError).

@@ -5,11 +5,13 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "support/cli_test.hpp"
 #include "zeroset/io/image_reader.hpp"
@@ -295,6 +297,35 @@ TEST_F(Cli, AnInterruptedRenderStopsPromptlyAndWritesNothing) {
         EXPECT_NE(r.err.find("nothing was written"), std::string::npos) << r.err;
         EXPECT_EQ(file_count(), 0u) << signal;
     }
+}
+
+}  // namespace
+
+namespace {
+
+TEST_F(Cli, TheTileLogHasARowPerTileAndABadPlaceIsRefusedBeforeRendering) {
+    const Outcome r = run("render -q -o out.png --width 40 --height 20 --threads 2 --tile-log tiles.csv");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string log = zeroset::test::read_text(dir_ / "tiles.csv");
+    EXPECT_EQ(log.substr(0, log.find('\n')), "frame,x0,y0,width,height,rank,seconds,evaluations,camera_rays,hits");
+    // 40×20 is 3 × 2 tiles, the last column and row narrower; every ray counted once.
+    EXPECT_EQ(std::count(log.begin(), log.end(), '\n'), 1 + 6) << log;
+    EXPECT_NE(log.find("\n0,32,16,8,4,0,"), std::string::npos) << log;
+    std::istringstream rows(log.substr(log.find('\n') + 1));
+    long long rays = 0;
+    for (std::string row; std::getline(rows, row);) {
+        std::vector<std::string> cells;
+        std::istringstream fields(row);
+        for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+        ASSERT_EQ(cells.size(), 10U) << row;
+        rays += std::stoll(cells[8]);
+    }
+    EXPECT_EQ(rays, 40 * 20);
+    // A log that cannot be written stops the render before it starts.
+    const Outcome bad = run("render -o late.png --width 16 --height 16 --tile-log no/such/dir/tiles.csv");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_NE(bad.err.find("no/such/dir/tiles.csv"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(dir_ / "late.png"));
 }
 
 }  // namespace

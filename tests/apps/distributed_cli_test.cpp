@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 #include "support/cli_test.hpp"
@@ -76,6 +77,33 @@ TEST_F(DistributedCli, SamplesLayersIncludesAndPrimitivesAreTheSame) {
     expect_same_file("render " + scene("sweeps/coil.zs") + " --width 64 --height 48", "sweep.png", 3);
 }
 
+TEST_F(DistributedCli, OtherRanksNeedNoneOfRankZerosFiles) {
+    // Rank 1 runs in an empty folder: the scene, its include and the output
+    // folder exist for rank 0 only, as on a cluster without a shared file system.
+    dir_.write("inc/ball.zs", "let ball = x^2 + y^2 + z^2 - 1\n");
+    dir_.write("scene.zs", "include \"inc/ball.zs\"\ncamera { from (0, 1, -5) }\nlight { from (-5, 8, -6) }\n"
+                           "object { surface ball  bounds box((-2, -2, -2), (2, 2, 2)) }\n");
+    fs::create_directories(dir_.path() / "out");
+    fs::create_directories(dir_.path() / "elsewhere");
+    const std::string args = "render scene.zs --width 48 --height 32 -q --tile-log out/tiles.csv -o out/";
+    ASSERT_EQ(run(args + "one.png").status, 0);
+    dir_.write("run.sh", "if [ \"$OMPI_COMM_WORLD_RANK\" = 1 ]; then cd elsewhere; fi\nexec '" ZEROSET_BINARY "' " + args +
+                             "many.png\n");
+    const Outcome r = run_shell(launcher(2) + "sh run.sh");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(read_text(dir_.path() / "out/one.png") == read_text(dir_.path() / "out/many.png"));
+    std::istringstream log(read_text(dir_.path() / "out/tiles.csv"));
+    int rank_1_tiles = 0;
+    for (std::string row; std::getline(log, row);) {
+        std::istringstream cells(row);
+        std::string cell;
+        for (int column = 0; column < 6; ++column) std::getline(cells, cell, ',');  // the sixth is the rank
+        rank_1_tiles += cell == "1";
+    }
+    EXPECT_GT(rank_1_tiles, 0) << "rank 1 traced no tile";
+    EXPECT_TRUE(fs::is_empty(dir_.path() / "elsewhere"));
+}
+
 TEST_F(DistributedCli, AnimationsSpreadFramesAndTilesAndMatch) {
     dir_.write("orbit.zs",
                "camera { from (0, 1, -6) }\n"
@@ -115,6 +143,35 @@ TEST_F(DistributedCli, ANanOnAnyRankEndsTheJobWithItsMessage) {
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("NaN"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir_.path() / "out.png"));
+}
+
+TEST_F(DistributedCli, AFailureInARanksLastTilesOrAnEarlierFrameIsNeverLost) {
+    // 8×8 is one tile: a NaN found while tracing it must fail the job, not
+    // be sent as a tile that completes the frame (several runs, as it is a race).
+    dir_.write("nan.zs",
+               "camera { from (0, 0, -5) }\n"
+               "object \"root\" { surface sqrt(x) + y^2 + z^2 - 1  bounds box((-2, -2, -2), (2, 2, 2)) }\n");
+    for (int run = 0; run < 3; ++run) {
+        const Outcome r = mpirun("render nan.zs -o one.png --width 8 --height 8 --threads 1");
+        EXPECT_EQ(r.status, 1) << r.err;
+        EXPECT_NE(r.err.find("NaN"), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir_.path() / "one.png"));
+    }
+    // NaN in frame 0 only: its failure must survive the frame being freed
+    // while the ranks go on to later frames, and frame 0 is never written.
+    dir_.write("nan0.zs",
+               "image { width 16 height 16 }\ncamera { from (0, 0, -5) }\n"
+               "object \"root\" { surface sqrt(x + 10 * clock) + y^2 + z^2 - 1  bounds box((-2, -2, -2), (2, 2, 2)) }\n");
+    const Outcome frames = mpirun("render nan0.zs --frames 4 -o frame.png --threads 1");
+    EXPECT_EQ(frames.status, 1) << frames.err;
+    EXPECT_NE(frames.err.find("NaN"), std::string::npos) << frames.err;
+    EXPECT_FALSE(fs::exists(dir_.path() / "frame_0000.png"));
+}
+
+TEST_F(DistributedCli, StandardOutputIsRefusedUnderMpirun) {
+    const Outcome r = mpirun("render -q -o - --width 16 --height 16");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("under mpirun, write the image to a file"), std::string::npos) << r.err;
 }
 
 TEST_F(DistributedCli, AKilledRankEndsTheJobWithNoImage) {

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <optional>
 
 #include "../progress_bar.hpp"
 #include "../tile_log.hpp"
@@ -44,9 +45,9 @@ struct FrameState {
 
 class Coordinator {
 public:
-    Coordinator(const RenderJob& job, int ranks, const std::vector<std::vector<TileRect>>& frame_tiles)
-        : job_(job), frame_tiles_(frame_tiles), ranks_(static_cast<std::size_t>(ranks)), pool_(job, job.threads()) {
-        for (const auto& tiles : frame_tiles) total_tiles_ += tiles.size();
+    Coordinator(const RenderJob& job, int ranks, const std::vector<FrameSize>& frame_sizes)
+        : job_(job), frame_sizes_(frame_sizes), ranks_(static_cast<std::size_t>(ranks)) {
+        for (std::size_t frame = 0; frame < frame_sizes.size(); ++frame) total_tiles_ += tiles_in(frame);
     }
 
     int run() {
@@ -65,7 +66,8 @@ public:
 
 private:
     void gather() {
-        ranks_[0].threads = pool_.threads();
+        pool_.emplace(job_, job_.threads());
+        ranks_[0].threads = pool_->threads();
         for (std::size_t rank = 1; rank < ranks_.size(); ++rank) {
             const mpi::Message ready = mpi::receive(static_cast<int>(rank));
             if (ready.tag == mpi::Tag::Error) throw RenderError("rank " + std::to_string(rank) + ": " + ready.bytes);
@@ -73,9 +75,12 @@ private:
         }
         for (std::size_t rank = 1; rank < ranks_.size(); ++rank) hand_out(rank);
         hand_out(0);
-        while (frames_written_ < frame_tiles_.size()) {
-            if (auto why = pool_.failure()) throw RenderError(*why);
-            while (auto tile = pool_.take_finished(tile_wait)) {
+        while (frames_written_ < frame_sizes_.size()) {
+            if (auto why = pool_->failure()) throw RenderError(*why);
+            // One of its own tiles at most, then every message: rank 0's
+            // cheap tiles must not keep the other ranks waiting.
+            if (auto tile = pool_->take_finished(tile_wait)) {
+                if (auto why = pool_->failure()) throw RenderError(*why);  // the tile may have been stopped
                 accept(0, std::move(*tile));
                 hand_out(0);
             }
@@ -95,20 +100,20 @@ private:
     void hand_out(std::size_t rank) {
         RankState& state = ranks_[rank];
         std::vector<WorkItem> items;
-        while (state.in_flight < tiles_in_flight_per_thread * state.threads && next_frame_ < frame_tiles_.size()) {
+        while (state.in_flight < tiles_in_flight_per_thread * state.threads && next_frame_ < frame_sizes_.size()) {
             items.push_back({static_cast<std::int32_t>(next_frame_), static_cast<std::uint32_t>(next_tile_)});
             ++state.in_flight;
-            if (++next_tile_ == frame_tiles_[next_frame_].size()) ++next_frame_, next_tile_ = 0;
+            if (++next_tile_ == tiles_in(next_frame_)) ++next_frame_, next_tile_ = 0;
         }
         if (rank == 0) {
-            for (const WorkItem& item : items) open(item.frame), pool_.push(item);
+            for (const WorkItem& item : items) open(item.frame), pool_->push(item);
         } else if (!items.empty()) {
             ByteWriter out;
             out.put<std::uint64_t>(items.size());
             for (const WorkItem& item : items) out.put(item);
             mpi::send(static_cast<int>(rank), mpi::Tag::Work, out.take());
             for (const WorkItem& item : items) open(item.frame);
-        } else if (state.in_flight == 0 && !state.done_sent && next_frame_ == frame_tiles_.size()) {
+        } else if (state.in_flight == 0 && !state.done_sent && next_frame_ == frame_sizes_.size()) {
             mpi::send(static_cast<int>(rank), mpi::Tag::Done, {});
             state.done_sent = true;
         }
@@ -118,11 +123,11 @@ private:
     /// render's stats and failure checks speak for the whole frame.
     void open(std::int32_t frame) {
         if (frames_.contains(frame)) return;
-        const OpenFrame& opened = pool_.open_frame(frame);
+        const OpenFrame& opened = pool_->open_frame(frame);
         FrameState& state = frames_[frame];
         state.image = Image(opened.render->settings().width, opened.render->settings().height);
         if (opened.render->settings().layers) state.image.add_layers();
-        state.tiles_left = frame_tiles_[static_cast<std::size_t>(frame)].size();
+        state.tiles_left = tiles_in(static_cast<std::size_t>(frame));
         state.start = Clock::now();
     }
 
@@ -133,14 +138,18 @@ private:
         state.thread_seconds += tile.work.seconds;
         state.evaluations += tile.work.trace.evaluations();
         const auto found = frames_.find(tile.frame);
-        if (found == frames_.end() || tile.tile >= frame_tiles_[static_cast<std::size_t>(tile.frame)].size())
+        if (found == frames_.end() || tile.tile >= tiles_in(static_cast<std::size_t>(tile.frame)))
             throw RenderError("rank " + std::to_string(rank) + " sent a tile that was never handed out");
         FrameState& frame = found->second;
-        const TileRect& rect = frame_tiles_[static_cast<std::size_t>(tile.frame)][tile.tile];
+        const FrameSize& size = frame_sizes_[static_cast<std::size_t>(tile.frame)];
+        const TileRect rect = tile_at(size.width, size.height, tile.tile);
+        if (tile.pixels.width != rect.width() || tile.pixels.height != rect.height() ||
+            tile.pixels.has_layers() != frame.image.has_layers())
+            throw RenderError("rank " + std::to_string(rank) + " sent a tile of the wrong size (is it the same build?)");
         place_tile(tile.pixels, rect, frame.image);
         frame.work += tile.work;
         if (job_.tile_log()) log_.add(static_cast<std::size_t>(tile.frame), static_cast<int>(rank), rect, tile.work);
-        FrameRender& render = *pool_.open_frame(tile.frame).render;
+        FrameRender& render = *pool_->open_frame(tile.frame).render;
         if (frame.work.trace.evaluations() > render.budget()) {
             render.stop_over_budget();
             throw RenderError(*render.failure());
@@ -151,7 +160,7 @@ private:
 
     void write_frame(std::int32_t number) {
         FrameState& frame = frames_.at(number);
-        const FrameRender& render = *pool_.open_frame(number).render;
+        const FrameRender& render = *pool_->open_frame(number).render;
         int threads = 0;
         for (const RankState& rank : ranks_) threads += rank.threads;
         const RenderStats stats = render.finish(
@@ -165,7 +174,7 @@ private:
             std::fprintf(stderr, "zeroset: wrote %s — %s\n", job_.output().name(file_number).c_str(),
                          summary_line(stats).c_str());
         frames_.erase(number);
-        pool_.close_frame(number);
+        pool_->close_frame(number);
         ++frames_written_;
     }
 
@@ -201,9 +210,13 @@ private:
     }
 
     const RenderJob& job_;
-    const std::vector<std::vector<TileRect>>& frame_tiles_;
+    [[nodiscard]] std::size_t tiles_in(std::size_t frame) const {
+        return tile_count(frame_sizes_[frame].width, frame_sizes_[frame].height);
+    }
+
+    const std::vector<FrameSize>& frame_sizes_;
     std::vector<RankState> ranks_;
-    RankPool pool_;
+    std::optional<RankPool> pool_;  // made in gather(), so that a failure to make it stops the other ranks too
     std::map<std::int32_t, FrameState> frames_;
     std::size_t next_frame_ = 0, next_tile_ = 0;
     std::size_t total_tiles_ = 0, tiles_done_ = 0;
@@ -214,8 +227,8 @@ private:
 
 }  // namespace
 
-int run_coordinator(const RenderJob& job, int ranks, const std::vector<std::vector<TileRect>>& frame_tiles) {
-    return Coordinator(job, ranks, frame_tiles).run();
+int run_coordinator(const RenderJob& job, int ranks, const std::vector<FrameSize>& frame_sizes) {
+    return Coordinator(job, ranks, frame_sizes).run();
 }
 
 }  // namespace zeroset::cli

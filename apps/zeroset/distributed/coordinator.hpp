@@ -12,8 +12,14 @@
 
 namespace zeroset::cli {
 
+/// A frame's image size, which gives its tiles (image_tiles).
+struct FrameSize {
+    int width = 0;
+    int height = 0;
+};
+
 /// Runs rank 0's part of the job over `ranks` ranks, given every frame's
-/// tiles; returns 0, or throws (after stopping every rank) when any rank failed.
-int run_coordinator(const RenderJob& job, int ranks, const std::vector<std::vector<TileRect>>& frame_tiles);
+/// size; returns 0, or throws (after stopping every rank) when any rank failed.
+int run_coordinator(const RenderJob& job, int ranks, const std::vector<FrameSize>& frame_sizes);
 
 }  // namespace zeroset::cli

@@ -37,12 +37,20 @@ const OpenFrame& RankPool::open_frame(std::int32_t frame) {
 
 void RankPool::close_frame(std::int32_t frame) {
     std::lock_guard lock(mutex_);
-    frames_.erase(frame);
+    if (const auto it = frames_.find(frame); it != frames_.end()) close(it);
 }
 
 void RankPool::close_idle_frames_before(std::int32_t frame) {
     std::lock_guard lock(mutex_);
-    std::erase_if(frames_, [frame](const auto& entry) { return entry.first < frame && entry.second.pending == 0; });
+    for (auto it = frames_.begin(); it != frames_.end() && it->first < frame;)
+        it = it->second.pending == 0 ? close(it) : std::next(it);
+}
+
+/// Frees the frame, keeping its failure: a frame closed after it failed
+/// must still fail the job.
+std::map<std::int32_t, RankPool::Frame>::iterator RankPool::close(std::map<std::int32_t, Frame>::iterator frame) {
+    if (!kept_failure_) kept_failure_ = frame->second.open->render->failure();
+    return frames_.erase(frame);
 }
 
 void RankPool::push(const WorkItem& item) {
@@ -64,7 +72,7 @@ std::optional<TileResult> RankPool::take_finished(std::chrono::microseconds wait
 
 std::optional<std::string> RankPool::failure() const {
     std::lock_guard lock(mutex_);
-    if (thread_failure_) return thread_failure_;
+    if (kept_failure_) return kept_failure_;
     for (const auto& [number, frame] : frames_)
         if (auto why = frame.open->render->failure()) return why;
     return std::nullopt;
@@ -105,7 +113,7 @@ void RankPool::run() {
             traced = trace(item, *frame, *worker);
         } catch (const std::exception& e) {
             std::lock_guard lock(mutex_);
-            if (!thread_failure_) thread_failure_ = e.what();
+            if (!kept_failure_) kept_failure_ = e.what();
         }
         {
             std::lock_guard lock(mutex_);

@@ -58,7 +58,8 @@ public:
     /// A traced tile, waiting up to `wait` for one.
     std::optional<TileResult> take_finished(std::chrono::microseconds wait);
     /// Why a tile could not be traced — a frame's failure (a NaN, its
-    /// budget spent…) or an exception in a thread — once there is a reason.
+    /// budget spent…), open or since closed, or an exception in a thread —
+    /// once there is a reason.
     [[nodiscard]] std::optional<std::string> failure() const;
 
 private:
@@ -67,6 +68,7 @@ private:
         int pending = 0;  // tiles queued or being traced
     };
     void run();
+    std::map<std::int32_t, Frame>::iterator close(std::map<std::int32_t, Frame>::iterator frame);  // mutex_ held
     TileResult trace(const WorkItem& item, OpenFrame& frame, FrameRender::Worker& worker) const;
 
     const RenderJob& job_;
@@ -76,7 +78,7 @@ private:
     std::map<std::int32_t, Frame> frames_;
     std::deque<WorkItem> queue_;
     std::deque<TileResult> finished_;
-    std::optional<std::string> thread_failure_;
+    std::optional<std::string> kept_failure_;  // of a thread, or of a frame since closed
     bool stopping_ = false;
     int thread_count_ = 1;
     std::vector<std::jthread> threads_;

@@ -19,16 +19,16 @@ namespace zeroset::cli {
 namespace {
 
 /// Rank 0 loads every frame's scene once, recording the files it reads, and
-/// checks each frame's settings; returns every frame's tiles.
-std::vector<std::vector<TileRect>> plan_frames(const RenderJob& job, FileSnapshot& files) {
+/// checks each frame's settings; returns every frame's size.
+std::vector<FrameSize> plan_frames(const RenderJob& job, FileSnapshot& files) {
     const FileRecording recording(files);
-    std::vector<std::vector<TileRect>> frame_tiles;
+    std::vector<FrameSize> frame_sizes;
     for (std::size_t frame = 0; frame < job.frame_count(); ++frame) {
         const Scene scene = job.load_frame(frame, job.quiet() || frame > 0);
         const RenderSettings settings = job.settings_for(scene);
-        frame_tiles.push_back(image_tiles(settings.width, settings.height));
+        frame_sizes.push_back({settings.width, settings.height});
     }
-    return frame_tiles;
+    return frame_sizes;
 }
 
 }  // namespace
@@ -39,18 +39,18 @@ int render_distributed(const RenderJob& job) {
     if (session.rank() != 0) {
         const std::string sent = mpi::broadcast({}, session.rank());
         if (sent.empty()) return 0;  // rank 0 could not load the scene: it says why, and ends with 1
-        return run_worker_rank(job, FileSnapshot::unpack(std::string_view(sent).substr(1)));
+        return run_worker_rank(job, std::string_view(sent).substr(1));
     }
     FileSnapshot files;
-    std::vector<std::vector<TileRect>> frame_tiles;
+    std::vector<FrameSize> frame_sizes;
     try {
-        frame_tiles = plan_frames(job, files);
+        frame_sizes = plan_frames(job, files);
     } catch (...) {
         mpi::broadcast({}, 0);
         throw;
     }
     mpi::broadcast("+" + files.pack(), 0);
-    return run_coordinator(job, session.size(), frame_tiles);
+    return run_coordinator(job, session.size(), frame_sizes);
 }
 
 std::string mpi_version_line() {

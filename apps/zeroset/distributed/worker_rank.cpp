@@ -8,6 +8,7 @@
 #include "mpi_link.hpp"
 #include "rank_pool.hpp"
 #include "zeroset/math/byte_buffer.hpp"
+#include "zeroset/scene/file_snapshot.hpp"
 
 namespace zeroset::cli {
 
@@ -34,14 +35,11 @@ int fail(const std::string& why) {
 
 }  // namespace
 
-int run_worker_rank(const RenderJob& job, const FileSnapshot& files) {
-    const FileReplay replay(files);
-    std::optional<RankPool> pool;
-    try {
-        pool.emplace(job, job.threads());
-    } catch (const std::exception& e) {
-        return fail(e.what());
-    }
+namespace {
+
+/// The loop itself; any exception is the caller's to report.
+int serve(const RenderJob& job) {
+    std::optional<RankPool> pool(std::in_place, job, job.threads());
     ByteWriter ready;
     ready.put<std::int32_t>(pool->threads());
     mpi::send(0, mpi::Tag::Ready, ready.take());
@@ -50,13 +48,16 @@ int run_worker_rank(const RenderJob& job, const FileSnapshot& files) {
     bool done = false;
     std::int32_t newest_frame = 0;
     while (!(done && in_flight == 0)) {
-        if (auto why = pool->failure()) return fail(*why);
         while (auto tile = pool->take_finished(tile_wait)) {
+            // Checked after the tile is out of the pool and before it is
+            // sent: a tile stopped by a failure, or the failure of a frame
+            // about to be freed, is reported instead of sent.
+            if (auto why = pool->failure()) return fail(*why);
             --in_flight;
             mpi::send(0, mpi::Tag::Tile, tile->pack());
             pool->close_idle_frames_before(newest_frame);
-            if (auto why = pool->failure()) return fail(*why);
         }
+        if (auto why = pool->failure()) return fail(*why);
         const auto message = mpi::poll(0);
         if (!message) continue;
         if (message->tag == mpi::Tag::Abort) {
@@ -68,20 +69,28 @@ int run_worker_rank(const RenderJob& job, const FileSnapshot& files) {
             done = true;
             continue;
         }
-        try {
-            ByteReader in(message->bytes, "the work rank 0 sent");
-            for (auto n = in.get<std::uint64_t>(); n > 0; --n) {
-                const auto item = in.get<WorkItem>();
-                pool->open_frame(item.frame);
-                if (item.frame > newest_frame) pool->close_idle_frames_before(newest_frame = item.frame);
-                pool->push(item);
-                ++in_flight;
-            }
-        } catch (const std::exception& e) {
-            return fail(e.what());
+        ByteReader in(message->bytes, "the work rank 0 sent");
+        for (auto n = in.get<std::uint64_t>(); n > 0; --n) {
+            const auto item = in.get<WorkItem>();
+            pool->open_frame(item.frame);
+            if (item.frame > newest_frame) pool->close_idle_frames_before(newest_frame = item.frame);
+            pool->push(item);
+            ++in_flight;
         }
     }
     return 0;
+}
+
+}  // namespace
+
+int run_worker_rank(const RenderJob& job, std::string_view files) {
+    try {
+        const FileSnapshot snapshot = FileSnapshot::unpack(files);
+        const FileReplay replay(snapshot);
+        return serve(job);
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
 }
 
 }  // namespace zeroset::cli

@@ -3,13 +3,15 @@
 // until rank 0 says the job is done or has failed.
 #pragma once
 
+#include <string_view>
+
 #include "../render_job.hpp"
-#include "zeroset/scene/file_snapshot.hpp"
 
 namespace zeroset::cli {
 
 /// Runs the rank's part; returns its exit status: 0, also when the job
 /// failed, which rank 0 reports and ends with its own status.
-int run_worker_rank(const RenderJob& job, const FileSnapshot& files);
+/// `files` is the packed FileSnapshot rank 0 broadcast.
+int run_worker_rank(const RenderJob& job, std::string_view files);
 
 }  // namespace zeroset::cli

@@ -67,11 +67,21 @@ const RenderSettings& checked(const Scene& scene, const RenderSettings& settings
 
 }  // namespace
 
+std::size_t tile_count(int width, int height) {
+    const auto columns = static_cast<std::size_t>((width + tile_side - 1) / tile_side);
+    const auto rows = static_cast<std::size_t>((height + tile_side - 1) / tile_side);
+    return columns * rows;
+}
+
+TileRect tile_at(int width, int height, std::size_t index) {
+    const auto columns = static_cast<std::size_t>((width + tile_side - 1) / tile_side);
+    const int x = static_cast<int>(index % columns) * tile_side, y = static_cast<int>(index / columns) * tile_side;
+    return {x, y, std::min(x + tile_side, width), std::min(y + tile_side, height)};
+}
+
 std::vector<TileRect> image_tiles(int width, int height) {
     std::vector<TileRect> tiles;
-    for (int y = 0; y < height; y += tile_side)
-        for (int x = 0; x < width; x += tile_side)
-            tiles.push_back({x, y, std::min(x + tile_side, width), std::min(y + tile_side, height)});
+    for (std::size_t i = 0; i < tile_count(width, height); ++i) tiles.push_back(tile_at(width, height, i));
     return tiles;
 }
 

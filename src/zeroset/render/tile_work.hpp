@@ -23,6 +23,10 @@ inline constexpr int tile_side = 16;
 /// The image's tiles in reading order: rows of tile_side squares, narrower at
 /// the right and bottom edges.
 std::vector<TileRect> image_tiles(int width, int height);
+/// How many tiles image_tiles(width, height) has, and tile `index` of them,
+/// without making the list.
+std::size_t tile_count(int width, int height);
+TileRect tile_at(int width, int height, std::size_t index);
 
 /// What tracing some tiles cost; summed over tiles into the render's stats.
 struct TileWork {
