@@ -3,21 +3,26 @@
 // PMI-based launchers PMI_ or PMIX_SIZE and _RANK. Read from the
 // environment, so that a single process never starts MPI (nor pays for it).
 #include <cstdlib>
+#include <optional>
+#include <string>
 
 #include "distributed_launch.hpp"
 
 namespace zeroset::cli {
 
-bool distributed_launch() {
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
-        if (const char* size = std::getenv(name); size && std::atoi(size) > 1) return true;
-    return false;
+namespace {
+
+/// The launcher's number `what` (SIZE or RANK) for this process, if set.
+std::optional<int> launcher_number(const std::string& what) {
+    for (const char* prefix : {"OMPI_COMM_WORLD_", "PMI_", "PMIX_"})
+        if (const char* value = std::getenv((prefix + what).c_str())) return std::atoi(value);
+    return std::nullopt;
 }
 
-int launched_rank() {
-    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
-        if (const char* rank = std::getenv(name)) return std::atoi(rank);
-    return 0;
-}
+}  // namespace
+
+bool distributed_launch() { return launcher_number("SIZE").value_or(1) > 1; }
+
+int launched_rank() { return launcher_number("RANK").value_or(0); }
 
 }  // namespace zeroset::cli

@@ -109,12 +109,7 @@ int render_command(const std::vector<std::string>& args) {
             }
         }();
         bar.finish();
-        job.output().write(result.image, number);
-        if (frame == 0)  // the same scene's warnings for every frame: once is enough
-            for (const std::string& warning : result.stats.warnings) std::fprintf(stderr, "zeroset: warning: %s\n", warning.c_str());
-        if (!job.quiet())
-            std::fprintf(stderr, "zeroset: wrote %s — %s\n", job.output().name(number).c_str(),
-                         summary_line(result.stats).c_str());
+        job.write_frame(frame, result.image, result.stats);
     }
     if (job.tile_log()) log.write(*job.tile_log());
     return 0;

@@ -1,6 +1,7 @@
 // The render command's options, read into a job.
 #include "render_job.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "ray_options.hpp"
@@ -64,6 +65,15 @@ int RenderJob::frame_number(std::size_t frame) const { return clocks_.size() > 1
 
 Scene RenderJob::load_frame(std::size_t frame, bool quiet_notes) const {
     return scene_file_ ? load_scene_file(*scene_file_, options_, clocks_[frame], quiet_notes) : default_scene();
+}
+
+void RenderJob::write_frame(std::size_t frame, const Image& image, const RenderStats& stats) const {
+    const int number = frame_number(frame);
+    output_.write(image, number);
+    if (frame == 0)
+        for (const std::string& warning : stats.warnings) std::fprintf(stderr, "zeroset: warning: %s\n", warning.c_str());
+    if (!quiet_)
+        std::fprintf(stderr, "zeroset: wrote %s — %s\n", output_.name(number).c_str(), summary_line(stats).c_str());
 }
 
 int RenderJob::threads() const { return options_.integer("--threads").value_or(0); }

@@ -12,7 +12,9 @@
 #include "image_output.hpp"
 #include "options.hpp"
 #include "tile_log.hpp"
+#include "zeroset/render/image.hpp"
 #include "zeroset/render/render_settings.hpp"
+#include "zeroset/render/render_stats.hpp"
 #include "zeroset/scene/scene.hpp"
 
 namespace zeroset::cli {
@@ -36,6 +38,9 @@ public:
     /// --threads: render threads per process, 0 for all cores.
     [[nodiscard]] int threads() const;
     [[nodiscard]] const ImageOutput& output() const { return output_; }
+    /// Writes the frame's image, then prints the scene's warnings (for frame
+    /// 0 only: every frame has the same) and, unless quiet, the summary line.
+    void write_frame(std::size_t frame, const Image& image, const RenderStats& stats) const;
     [[nodiscard]] bool quiet() const { return quiet_; }
     /// --tile-log's file, when given.
     [[nodiscard]] const std::optional<std::filesystem::path>& tile_log() const { return tile_log_; }

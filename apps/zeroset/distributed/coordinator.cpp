@@ -165,14 +165,8 @@ private:
         for (const RankState& rank : ranks_) threads += rank.threads;
         const RenderStats stats = render.finish(
             frame.work, threads, std::chrono::duration<double>(Clock::now() - frame.start).count());
-        const int file_number = job_.frame_number(static_cast<std::size_t>(number));
-        job_.output().write(frame.image, file_number);
         bar_.finish();
-        if (number == 0)
-            for (const std::string& warning : stats.warnings) std::fprintf(stderr, "zeroset: warning: %s\n", warning.c_str());
-        if (!job_.quiet())
-            std::fprintf(stderr, "zeroset: wrote %s — %s\n", job_.output().name(file_number).c_str(),
-                         summary_line(stats).c_str());
+        job_.write_frame(static_cast<std::size_t>(number), frame.image, stats);
         frames_.erase(number);
         pool_->close_frame(number);
         ++frames_written_;

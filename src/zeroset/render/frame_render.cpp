@@ -44,19 +44,6 @@ std::string budget_message(std::uint64_t budget, bool by_default) {
     return message.str();
 }
 
-/// The tracer's counts past `before` (evaluation_limit left out).
-TraceCounters counted_since(const TraceCounters& now, const TraceCounters& before) {
-    TraceCounters d;
-    d.point_evaluations = now.point_evaluations - before.point_evaluations;
-    d.interval_evaluations = now.interval_evaluations - before.interval_evaluations;
-    d.gradient_evaluations = now.gradient_evaluations - before.gradient_evaluations;
-    d.nan_evaluations = now.nan_evaluations - before.nan_evaluations;
-    d.failed_queries = now.failed_queries - before.failed_queries;
-    d.cell_visits = now.cell_visits - before.cell_visits;
-    d.blob_kernels = now.blob_kernels - before.blob_kernels;
-    return d;
-}
-
 /// Checks, then prepares: the settings and camera before any costly work.
 const RenderSettings& checked(const Scene& scene, const RenderSettings& settings) {
     validate(settings);
@@ -212,7 +199,7 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
     }
     work.shadow_rays = shading.shadow_rays;
     work.reflection_rays = shading.reflection_rays;
-    work.trace = counted_since(tracer.counters(), before);
+    work.trace = tracer.counters().since(before);
     work.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return work;
 }

@@ -35,6 +35,20 @@ struct TraceCounters {
         blob_kernels += o.blob_kernels;
         return *this;
     }
+
+    /// The counts made since `before` (a snapshot of the same counters),
+    /// with no evaluation_limit: what one piece of work cost.
+    [[nodiscard]] TraceCounters since(const TraceCounters& before) const {
+        TraceCounters d;
+        d.point_evaluations = point_evaluations - before.point_evaluations;
+        d.interval_evaluations = interval_evaluations - before.interval_evaluations;
+        d.gradient_evaluations = gradient_evaluations - before.gradient_evaluations;
+        d.nan_evaluations = nan_evaluations - before.nan_evaluations;
+        d.failed_queries = failed_queries - before.failed_queries;
+        d.cell_visits = cell_visits - before.cell_visits;
+        d.blob_kernels = blob_kernels - before.blob_kernels;
+        return d;
+    }
 };
 
 }  // namespace zeroset
