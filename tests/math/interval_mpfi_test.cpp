@@ -210,6 +210,25 @@ TEST(IntervalMpfi, Mul) {
     check_binary("*", 6, 700, mpfi_mul, [](Interval a, Interval b) { return a * b; });  // overflow, underflow
 }
 
+TEST(IntervalMpfi, ExactZerosStayZero) {
+    // A sum that rounds to 0 is exact, and so is a product with a zero factor:
+    // their bounds stay 0 instead of stepping to subnormals (slow on x86).
+    const auto is_zero = [](Interval v) { return v.lo == 0.0 && v.hi == 0.0; };
+    EXPECT_TRUE(is_zero(Interval(0.0) + Interval(0.0)));
+    EXPECT_TRUE(is_zero(Interval(0.3) - Interval(0.3)));
+    EXPECT_TRUE(is_zero(Interval(0.0) * Interval(-3.0, 5.0)));
+    const Interval spread = Interval(-0.25, 0.5) - Interval(0.5);
+    EXPECT_EQ(spread.hi, 0.0);
+    EXPECT_LT(spread.lo, -0.75);
+    // A product that underflows is not exact: its tiny value stays enclosed.
+    const Interval positive = Interval(1e-200) * Interval(1e-200);
+    EXPECT_EQ(positive.lo, 0.0);
+    EXPECT_GT(positive.hi, 0.0);
+    const Interval negative = Interval(-1e-200) * Interval(1e-200);
+    EXPECT_LT(negative.lo, 0.0);
+    EXPECT_EQ(negative.hi, 0.0);
+}
+
 /// The exact range of a / b over b's nonzero part (MPFI answers ℝ for a divisor
 /// [0, 0], where the quotient is nowhere defined, and for 0 / b, which is 0).
 void division_range(Range& want, Interval a, Interval b) {

@@ -59,8 +59,8 @@ int compose(std::span<const double> c, const std::array<double, 3>& u, bool magn
 
 /// The interval of one coordinate of q over τ ∈ T: [q_c ± e] + T·[q_d ± e_d].
 Interval coordinate_over(double qc, double qc_error, double qd, double qd_error, const Interval& tau) {
-    const Interval center(rounding::down(qc - qc_error), rounding::up(qc + qc_error));
-    const Interval slope(rounding::down(qd - qd_error), rounding::up(qd + qd_error));
+    const Interval center = Interval(qc) + Interval(-qc_error, qc_error);
+    const Interval slope = Interval(qd) + Interval(-qd_error, qd_error);
     return center + tau * slope;
 }
 
@@ -81,7 +81,7 @@ Enclosure enclose(const BlobSegmentSettings& s, std::span<const KernelOnRay> ker
         for (int axis = 0; axis < 3; ++axis) {
             const double qc = k.q0[axis] + t_c * k.qd[axis];
             const Interval q = coordinate_over(qc, qc_error, k.qd[axis], k.qd_error, tau);
-            const Interval qd(rounding::down(k.qd[axis] - k.qd_error), rounding::up(k.qd[axis] + k.qd_error));
+            const Interval qd = Interval(k.qd[axis]) + Interval(-k.qd_error, k.qd_error);
             u += square(q);
             du += 2.0 * q * qd;
         }
@@ -315,7 +315,7 @@ HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels
     for (long visited = 0; !segments.empty(); ++visited) {
         if (visited == settings_.max_segments || counters.over_limit()) return HitStatus::Failed;
         const Segment s = segments.pop();
-        const Interval tau(rounding::down(s.a - t_c), rounding::up(s.b - t_c));
+        const Interval tau = Interval(s.a, s.b) - Interval(t_c);
         const Enclosure e = enclose(settings_, kernels, active, t_c, tau);
         ++counters.interval_evaluations;
         if (e.value.is_empty() || !std::isfinite(e.value.lo) || !std::isfinite(e.value.hi)) return HitStatus::Failed;
@@ -331,8 +331,8 @@ HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels
         // A near miss: the mean-value form f(m) + f′(T)·(T − m) excludes 0.
         const double mid = 0.5 * (s.a + s.b);
         const Interval at_mid =
-            enclose(settings_, kernels, active, t_c, Interval(rounding::down(mid - t_c), rounding::up(mid - t_c))).value;
-        if (!(at_mid + e.slope * Interval(rounding::down(s.a - mid), rounding::up(s.b - mid))).contains(0.0)) continue;
+            enclose(settings_, kernels, active, t_c, Interval(mid) - Interval(t_c)).value;
+        if (!(at_mid + e.slope * (Interval(s.a, s.b) - Interval(mid))).contains(0.0)) continue;
         if (s.b - s.a > settings_.tangent_width && SegmentStack::above_resolution(s) && segments.can_split(s)) {
             segments.split(s, s.a);  // step 5: front half first
             continue;
