@@ -79,8 +79,10 @@ std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay
     if (!reach) return std::nullopt;
     const double t_in = std::max(reach->t0, part.t0), t_out = std::min(reach->t1, part.t1);
     if (!(t_in <= t_out)) return std::nullopt;
-    return KernelOnRay{q.q0, q.qd, q.q0_error, q.qd_error, c.strength, c.blobbiness, t_in, t_out,
-                       static_cast<std::uint32_t>(&c - components_.data())};
+    KernelOnRay k{q.q0, q.qd, q.q0_error, q.qd_error, c.strength, c.blobbiness, t_in, t_out,
+                  static_cast<std::uint32_t>(&c - components_.data())};
+    if (!settings_.metaball_quadratics) k.peak = kernel_upper_bound(settings_, k, t_in, t_out);
+    return k;
 }
 
 Blob::MappedRay Blob::about_point(const Ray& ray, const Component& c, const Vec3d& center) const {

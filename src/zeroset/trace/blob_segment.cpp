@@ -57,13 +57,6 @@ int compose(std::span<const double> c, const std::array<double, 3>& u, bool magn
     return n;
 }
 
-/// The interval of one coordinate of q over τ ∈ T: [q_c ± e] + T·[q_d ± e_d].
-Interval coordinate_over(double qc, double qc_error, double qd, double qd_error, const Interval& tau) {
-    const Interval center = Interval(qc) + Interval(-qc_error, qc_error);
-    const Interval slope = Interval(qd) + Interval(-qd_error, qd_error);
-    return center + tau * slope;
-}
-
 struct Enclosure {
     Interval value;  // f over the segment
     Interval slope;  // f′ over it
@@ -75,28 +68,49 @@ Enclosure enclose(const BlobSegmentSettings& s, std::span<const KernelOnRay> ker
     Interval field(0.0), field_slope(0.0);
     for (const std::uint32_t i : active) {
         const KernelOnRay& k = kernels[i];
-        const double qc_error = k.q0_error + std::abs(t_c) * (k.qd_error + unit_roundoff * length(k.qd)) +
-                                2.0 * unit_roundoff * length(k.q0 + t_c * k.qd);
-        Interval u(0.0), du(0.0);
-        for (int axis = 0; axis < 3; ++axis) {
-            const double qc = k.q0[axis] + t_c * k.qd[axis];
-            const Interval q = coordinate_over(qc, qc_error, k.qd[axis], k.qd_error, tau);
-            const Interval qd = Interval(k.qd[axis]) + Interval(-k.qd_error, k.qd_error);
-            u += square(q);
-            du += 2.0 * q * qd;
-        }
-        u.lo = std::max(u.lo, 0.0);
-        const Interval K = kernel_over(s.kernel, u, k.blobbiness);
+        const KernelArgument a = kernel_argument(k, t_c, tau.lo, tau.hi);
+        const Interval K = kernel_over(s.kernel, a.u, k.blobbiness);
         // Blinn's slope is B·K: no second enclosure of the exponential.
         const Interval slope = s.kernel == BlobKernel::Blinn ? Interval(k.blobbiness) * K
-                                                             : kernel_slope_over(s.kernel, u, k.blobbiness);
+                                                             : kernel_slope_over(s.kernel, a.u, k.blobbiness);
         field += k.strength * K;
-        field_slope += k.strength * (slope * du);
+        field_slope += k.strength * (slope * a.du);
     }
     return {s.threshold - field, -field_slope};
 }
 
 }  // namespace
+
+KernelArgument kernel_argument(const KernelOnRay& k, double t_c, double tau_a, double tau_b) {
+    const double tau_max = std::max(std::abs(tau_a), std::abs(tau_b));
+    const Vec3d qc = k.q0 + t_c * k.qd;
+    // q's true coordinates lie within `spread` of qc + τ·qd: the ray's map, then q0 + t_c·qd.
+    const double spread = k.q0_error + std::abs(t_c) * (k.qd_error + unit_roundoff * length(k.qd)) +
+                          2.0 * unit_roundoff * length(qc) + tau_max * k.qd_error;
+    double u_lo = 0.0, u_hi = 0.0, q_sum = 0.0, d_sum = 0.0, magnitude = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double c = qc[axis], d = k.qd[axis];
+        // The ends' rounding (a product and a sum) and the subtraction of the margin: 4 units.
+        const double e = (spread + 4.0 * unit_roundoff * (std::abs(c) + tau_max * std::abs(d))) * (1.0 + 4.0 * unit_roundoff);
+        const double qa = c + tau_a * d, qb = c + tau_b * d;
+        const double lo = std::min(qa, qb) - e, hi = std::max(qa, qb) + e;
+        const double far = std::max(-lo, hi);
+        u_lo += lo > 0.0 ? lo * lo : (hi < 0.0 ? hi * hi : 0.0);
+        u_hi += far * far;
+        q_sum += far;
+        d_sum += std::abs(d);
+        magnitude += std::abs(c * d) + tau_max * d * d;
+    }
+    // u′/2 = q·q_d = qc·qd + τ·|qd|² for the computed line: its range is its ends'. The true
+    // one differs by the coordinates' spread times |q_d| and q's size times q_d's error.
+    const double g_c = dot(qc, k.qd), g_d = dot(k.qd, k.qd);
+    const double ga = g_c + tau_a * g_d, gb = g_c + tau_b * g_d;
+    const double g_error = q_sum * k.qd_error + d_sum * spread + 3.0 * spread * k.qd_error + 8.0 * unit_roundoff * magnitude;
+    // Sums of squares of three terms: well within 8 units relative; then the margins' own rounding.
+    const double g_lo = std::min(ga, gb) - g_error, g_hi = std::max(ga, gb) + g_error;
+    return {{u_lo * (1.0 - 8.0 * unit_roundoff), u_hi * (1.0 + 8.0 * unit_roundoff)},
+            {2.0 * (g_lo - 4.0 * unit_roundoff * std::abs(g_lo)), 2.0 * (g_hi + 4.0 * unit_roundoff * std::abs(g_hi))}};
+}
 
 std::optional<Span> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach) {
     const double a2 = dot(qd, qd);
@@ -126,24 +140,32 @@ ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<
     return {settings.threshold - field, -slope};
 }
 
+double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay& k, double ta, double tb) {
+    if (k.strength < 0.0) return 0.0;
+    // A ray along a cylinder's axis has qd = 0: u is the same everywhere (and [ta, tb] may be endless).
+    const double a2 = dot(k.qd, k.qd);
+    const double nearest = a2 > 0.0 ? std::clamp(-dot(k.q0, k.qd) / a2, ta, tb) : 0.0;
+    const Vec3d q = k.q0 + nearest * k.qd;
+    // |q| a little short by what the mapping and q0 + t·qd may be off
+    // (each coordinate, so √3 of it in length), then K a little high:
+    // every kernel decreases in u.
+    const double error = k.q0_error + std::abs(nearest) * k.qd_error +
+                         4.0 * unit_roundoff * (length(k.q0) + std::abs(nearest) * length(k.qd));
+    const double shortest = std::max(0.0, length(q) * (1.0 - 4.0 * unit_roundoff) - 1.7321 * error);
+    return k.strength * kernel_value_at(settings.kernel, shortest * shortest * (1.0 - 4.0 * unit_roundoff), k.blobbiness) *
+           (1.0 + 4.0 * unit_roundoff);
+}
+
 double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
                               std::span<const std::uint32_t> active, double ta, double tb) {
+    // First the components' peaks along the whole ray, worked out once a ray;
+    // when they cannot reach T, the segment's own nearest approaches need not be.
+    double peaks = 0.0;
+    for (const std::uint32_t i : active) peaks += kernels[i].peak;
+    peaks *= 1.0 + 1e-12;
+    if (peaks < settings.threshold) return peaks;
     double bound = 0.0;
-    for (const std::uint32_t i : active) {
-        const KernelOnRay& k = kernels[i];
-        if (k.strength < 0.0) continue;
-        // A ray along a cylinder's axis has qd = 0: u is the same everywhere.
-        const double a2 = dot(k.qd, k.qd);
-        const double nearest = a2 > 0.0 ? std::clamp(-dot(k.q0, k.qd) / a2, ta, tb) : ta;
-        const Vec3d q = k.q0 + nearest * k.qd;
-        // |q| a little short by what the mapping and q0 + t·qd may be off
-        // (each coordinate, so √3 of it in length), then K a little high:
-        // every kernel decreases in u.
-        const double error = k.q0_error + std::abs(nearest) * k.qd_error +
-                             4.0 * unit_roundoff * (length(k.q0) + std::abs(nearest) * length(k.qd));
-        const double shortest = std::max(0.0, length(q) * (1.0 - 4.0 * unit_roundoff) - 1.7321 * error);
-        bound += k.strength * kernel_value_at(settings.kernel, shortest * shortest * (1.0 - 4.0 * unit_roundoff), k.blobbiness);
-    }
+    for (const std::uint32_t i : active) bound += kernel_upper_bound(settings, kernels[i], ta, tb);
     return bound * (1.0 + 1e-12);
 }
 

@@ -12,10 +12,12 @@
 //   graze is missed that the bound can see.
 //
 //   Interval isolation (Blinn's Gaussian, metaballs): Mitchell's method
-//   (Fig. 9) on the segment, with f and f′ enclosed kernel by kernel — u over
-//   a t-interval is an exact quadratic range, and every kernel is monotone in
-//   u, so the enclosures are tight — a mean-value test for near misses, and
-//   safeguarded Newton on monotone pieces.
+//   (Fig. 9) on the segment, with f and f′ enclosed kernel by kernel — u from
+//   the ranges of q's coordinates, each linear in t, and every kernel is
+//   monotone in u, so the enclosures are tight — a mean-value test for near
+//   misses, and safeguarded Newton on monotone pieces. A segment is first
+//   offered to a cheap bound (the components' peaks along the ray, then
+//   their nearest approaches on it): most never reach T.
 //
 // Everything here works in fixed arrays and a caller's buffers: nothing is
 // allocated per ray.
@@ -29,6 +31,7 @@
 
 #include "zeroset/expr/blob_model.hpp"
 #include "zeroset/math/box3.hpp"
+#include "zeroset/math/interval.hpp"
 #include "zeroset/roots/root_function.hpp"
 #include "zeroset/trace/root_finder.hpp"
 
@@ -45,6 +48,8 @@ struct KernelOnRay {
     double t_in;        // the ray is within reach, u(t) ≤ reach, on [t_in, t_out]
     double t_out;
     std::uint32_t component;
+    /// kernel_upper_bound over [t_in, t_out]: blob_field_upper_bound's quick first try.
+    double peak = 0.0;
 };
 
 /// Where the ray q(t) = q0 + t·qd in a component's kernel space is within
@@ -54,6 +59,17 @@ std::optional<Span> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach)
 
 /// A bound on the rounding of each coordinate of m·v (m·(v, 1) for a point).
 double mapping_error(const Mat4& m, const Vec3d& v, bool point);
+
+/// u = |q|² and u′ = du/dt = 2 q·q_d of one component over τ ∈ [τa, τb]
+/// about t_c (t = t_c + τ), with the errors of mapping the ray into its
+/// space (q0_error, qd_error). Each coordinate of q is linear in τ, so its
+/// range is that of its ends, and so is u′'s; worked in plain doubles with
+/// one margin for the rounding, several times cheaper than an
+/// outward-rounded interval operation each.
+struct KernelArgument {
+    Interval u, du;
+};
+KernelArgument kernel_argument(const KernelOnRay& k, double t_c, double tau_a, double tau_b);
 
 /// What a segment search is given.
 struct BlobSegmentSettings {
@@ -91,6 +107,11 @@ double kernel_value_on_ray(const BlobSegmentSettings& settings, const KernelOnRa
 /// the exact kernel.
 ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
                                  std::span<const std::uint32_t> active, double t);
+
+/// An upper bound on s·K(u) over [ta, tb] from the component's nearest
+/// approach there, with the error of mapping the ray into its space; 0 for
+/// a negative strength. Exact kernels only.
+double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay& k, double ta, double tb);
 
 /// An upper bound on Σ sᵢ·K(uᵢ) over [ta, tb] from the positive components'
 /// nearest approach, with the error of mapping the ray into their spaces:
