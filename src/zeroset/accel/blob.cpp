@@ -31,6 +31,7 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
     if (!solid)
         throw std::invalid_argument("a blob needs a component of positive strength (its field never reaches the threshold)");
     bounds_ = *solid;
+    if (description_.clip) bounds_ = overlap(bounds_, description_.clip->enclosing_box());  // not valid() where they miss
     if (!std::isfinite(bounds_.diagonal()))
         throw std::invalid_argument("the blob's reach is wider than a double can measure");
     std::vector<Box3> boxes;
@@ -61,6 +62,13 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
     // The model's components and maps, the prepared ones, the BVH's nodes and leaf order.
     stats_.bytes = m.components().size() * (sizeof(BlobComponent) + sizeof(Mat4)) + components_.size() * sizeof(Component) +
                    bvh_->node_count() * 128 + components_.size() * sizeof(std::uint32_t);
+}
+
+std::optional<Span> Blob::clip(const Ray& ray, double t_min, double t_max) const {
+    if (!bounds_.valid()) return std::nullopt;
+    const auto span = bounds_.clip(ray, t_min, t_max);
+    if (!span || !description_.clip || description_.clip->kind == Bounds::Kind::Box) return span;
+    return description_.clip->clip(ray, span->t0, span->t1);
 }
 
 BlobScratch& Blob::scratch_for(TraceScratch& scratch) const {
@@ -230,7 +238,7 @@ void Blob::apply(const BlobScratch::Event& e, BlobScratch& s) const {
 }
 
 std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
-    const auto span = bounds_.clip(ray, t_min, t_max);
+    const auto span = clip(ray, t_min, t_max);
     if (!span) return std::nullopt;
     BlobScratch& s = scratch_for(scratch);
     s.kernels.clear();
@@ -300,8 +308,11 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
         return std::nullopt;
     }
     if (!hit) return std::nullopt;
-    const bool inside = *hit == span->t0 && value_on_ray(s, span->t0) < 0.0;
-    const Hit h{*hit, surface_at(ray, *hit, inside ? BoundaryKind::Open : BoundaryKind::Surface)};
+    // Inside already at the span's start: on the clip's cut when the ray came in through it.
+    BoundaryKind kind = BoundaryKind::Surface;
+    if (*hit == span->t0 && value_on_ray(s, span->t0) < 0.0)
+        kind = span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open;
+    const Hit h{*hit, surface_at(ray, *hit, kind)};
     s.hit_blob = this;
     s.hit_point = h.surface.local_point;
     s.hit_components.clear();
@@ -312,7 +323,7 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
 }
 
 void Blob::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {
-    const auto span = bounds_.clip(ray, t_min, t_max);
+    const auto span = clip(ray, t_min, t_max);
     if (!span) return;
     BlobScratch& s = scratch_for(scratch);
     gather(ray, span->t0, span->t1, s, scratch);
@@ -378,6 +389,8 @@ Vec3d Blob::gradient_from(const Vec3d& p, const Component& c) const {
 }
 
 Vec3d Blob::local_normal(const SurfaceRef& surface, TraceScratch& scratch) const {
+    if (surface.kind == BoundaryKind::Bounds)
+        return description_.clip.value_or(Bounds::make_box(bounds_)).normal_at(surface.local_point);
     Vec3d g{};
     const BlobScratch& s = scratch_for(scratch);
     if (s.hit_blob == this && s.hit_point == surface.local_point) {

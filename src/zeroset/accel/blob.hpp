@@ -13,6 +13,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "zeroset/accel/primitive.hpp"
 #include "zeroset/expr/blob_model.hpp"
 #include "zeroset/trace/blob_segment.hpp"
+#include "zeroset/trace/bounds.hpp"
 
 namespace zeroset {
 
@@ -35,6 +37,12 @@ struct BlobDescription {
     /// component's contribution along the ray as quadratic pieces in t —
     /// instead of the exact kernel.
     bool metaball_quadratics = false;
+    /// Written as an expression and recognised (expr/gaussian_sum.hpp): said in the summary.
+    bool from_expression = false;
+    /// Bounds that clip the blob as an object's bounds clip its surface (a
+    /// hit on them where they cut the solid): a recognised sum of Gaussians
+    /// keeps its object's. None for a blob, whose reach bounds it.
+    std::optional<Bounds> clip = std::nullopt;
 };
 
 /// What a thread writes while it traces a blob (one at a time: a blob's
@@ -83,6 +91,7 @@ public:
     [[nodiscard]] const BlobStats& stats() const { return stats_; }
     [[nodiscard]] double tolerance() const { return description_.tolerance; }
     [[nodiscard]] bool quadratics() const { return description_.metaball_quadratics; }
+    [[nodiscard]] bool from_expression() const { return description_.from_expression; }
     /// f and ∇f at a point, over the components in reach (for tests and normals).
     [[nodiscard]] double value_at(const Vec3d& p) const;
     [[nodiscard]] Vec3d gradient_at(const Vec3d& p) const;
@@ -120,6 +129,8 @@ private:
     [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part) const;
 
     BlobScratch& scratch_for(TraceScratch& scratch) const;
+    /// The part of [t_min, t_max] within the blob's reach and its clip.
+    [[nodiscard]] std::optional<Span> clip(const Ray& ray, double t_min, double t_max) const;
     /// Adds a component the ray meets to s.kernels and its events, clipped to [t_min, t_max], to s.events.
     void add_events(const KernelOnRay& k, double t_min, double t_max, BlobScratch& s) const;
     /// An event's change to the components in reach (s.active).

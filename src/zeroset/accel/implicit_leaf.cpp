@@ -14,24 +14,6 @@ namespace zeroset {
 
 namespace {
 
-/// The outward normal of the bounds at a point on them.
-Vec3d bounds_normal(const Bounds& bounds, const Vec3d& p) {
-    if (bounds.kind == Bounds::Kind::Sphere) return (p - bounds.center) / bounds.radius;
-    // The face the point is nearest to, relative to the box's size.
-    const Box3& box = bounds.box;
-    int best_axis = 0;
-    double best = INFINITY, sign = 1.0;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double size = std::max(box.hi[axis] - box.lo[axis], 1e-300);
-        const double to_lo = std::abs(p[axis] - box.lo[axis]) / size, to_hi = std::abs(box.hi[axis] - p[axis]) / size;
-        if (to_lo < best) best = to_lo, best_axis = axis, sign = -1.0;
-        if (to_hi < best) best = to_hi, best_axis = axis, sign = 1.0;
-    }
-    Vec3d n;
-    n[best_axis] = sign;
-    return n;
-}
-
 Vec3d unit_or_zero(const Vec3d& g) {
     const double len = length(g);
     if (!(len > 0.0) || !std::isfinite(len)) return {};
@@ -249,7 +231,7 @@ double ImplicitLeaf::normal_step() const {
 
 Vec3d ImplicitLeaf::local_normal(const SurfaceRef& surface, TraceScratch& scratch) const {
     const Vec3d& p = surface.local_point;
-    if (surface.kind == BoundaryKind::Bounds) return bounds_normal(description_.bounds, p);
+    if (surface.kind == BoundaryKind::Bounds) return description_.bounds.normal_at(p);
     LeafScratch& leaf = scratch_for(scratch);
     const auto f = [&](double x, double y, double z) { return leaf.value(x, y, z); };
     const auto central = [&](double h) {

@@ -3,14 +3,10 @@
 // a material on a node an instance around its primitive.
 #include "zeroset/render/prepared_scene.hpp"
 
-#include "zeroset/trace/bounds_cut.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
-
-#include <algorithm>
 #include <stdexcept>
 
 #include "zeroset/accel/blob.hpp"
@@ -20,8 +16,10 @@
 #include "zeroset/accel/half_space.hpp"
 #include "zeroset/accel/instance.hpp"
 #include "zeroset/accel/swept_sphere.hpp"
+#include "zeroset/expr/gaussian_sum.hpp"
 #include "zeroset/render/camera_rays.hpp"
 #include "zeroset/render/render_settings.hpp"
+#include "zeroset/trace/bounds_cut.hpp"
 
 namespace zeroset {
 
@@ -92,8 +90,9 @@ std::string PreparedScene::blob_summary() const {
                                                                : "exact degree-" + std::to_string(2 * (kernel.polynomial.size() - 1)) +
                                                                      " polynomials, guarded";
         char buffer[320];
-        std::snprintf(buffer, sizeof buffer, "'%s' blob: %zu %s components, %s segments, BVH %zu nodes, %.1f MB",
-                      blob->name().c_str(), s.components, std::string(kernel.name).c_str(), solved.c_str(),
+        std::snprintf(buffer, sizeof buffer, "'%s' blob%s: %zu %s components, %s segments, BVH %zu nodes, %.1f MB",
+                      blob->name().c_str(), blob->from_expression() ? " (a sum of Gaussians, recognised)" : "",
+                      s.components, std::string(kernel.name).c_str(), solved.c_str(),
                       s.bvh_nodes, static_cast<double>(s.bytes) / 1e6);
         text += (text.empty() ? "" : "; ") + std::string(buffer);
         if (!kernel.finite_support) {
@@ -189,10 +188,21 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
                 ++sweeps_;
                 break;
             }
-            if (o.blob && method == Method::Auto) {  // the blob's own exact path
+            // A sum of Gaussians written out is Blinn's blob: traced as one,
+            // within the object's bounds.
+            std::shared_ptr<const BlobModel> recognised;
+            if (!o.blob && method == Method::Auto && !o.open && !o.clip && o.bounds.kind != Bounds::Kind::None)
+                if (auto model = gaussian_sum_as_blob(o.surface))
+                    recognised = std::make_shared<const BlobModel>(std::move(*model));
+            if ((o.blob || recognised) && method == Method::Auto) {  // the blob's own path
                 BlobDescription b;
                 b.name = name;
-                b.model = o.blob;
+                b.model = recognised ? recognised : o.blob;
+                b.from_expression = recognised != nullptr;
+                if (recognised) {
+                    b.clip = o.bounds;
+                    if (!o.cut_by_bounds) warn_of_cut(*node, name, Tape(o.surface));
+                }
                 b.material = around;
                 b.tolerance = o.blob_tolerance;
                 b.metaball_quadratics = o.blob_quadratics;

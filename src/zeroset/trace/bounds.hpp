@@ -39,6 +39,23 @@ struct Bounds {
         return bounds;
     }
 
+    /// The outward normal at a point on the bounds: a sphere's, or that of
+    /// the box face the point is nearest to (relative to the box's size).
+    [[nodiscard]] Vec3d normal_at(const Vec3d& p) const {
+        if (kind == Kind::Sphere) return (p - center) / radius;
+        int best_axis = 0;
+        double best = std::numeric_limits<double>::infinity(), sign = 1.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double size = std::max(box.hi[axis] - box.lo[axis], 1e-300);
+            const double to_lo = std::abs(p[axis] - box.lo[axis]) / size, to_hi = std::abs(box.hi[axis] - p[axis]) / size;
+            if (to_lo < best) best = to_lo, best_axis = axis, sign = -1.0;
+            if (to_hi < best) best = to_hi, best_axis = axis, sign = 1.0;
+        }
+        Vec3d n;
+        n[best_axis] = sign;
+        return n;
+    }
+
     /// The smallest axis-aligned box containing the bounds.
     [[nodiscard]] Box3 enclosing_box() const {
         constexpr double inf = std::numeric_limits<double>::infinity();
