@@ -220,13 +220,36 @@ TEST(IntervalMpfi, ExactZerosStayZero) {
     const Interval spread = Interval(-0.25, 0.5) - Interval(0.5);
     EXPECT_EQ(spread.hi, 0.0);
     EXPECT_LT(spread.lo, -0.75);
-    // A product that underflows is not exact: its tiny value stays enclosed.
+    // A product that underflows is not exact: its tiny value stays enclosed,
+    // by the smallest normal double rather than a subnormal.
     const Interval positive = Interval(1e-200) * Interval(1e-200);
     EXPECT_EQ(positive.lo, 0.0);
-    EXPECT_GT(positive.hi, 0.0);
+    EXPECT_EQ(positive.hi, std::numeric_limits<double>::min());
     const Interval negative = Interval(-1e-200) * Interval(1e-200);
-    EXPECT_LT(negative.lo, 0.0);
+    EXPECT_EQ(negative.lo, -std::numeric_limits<double>::min());
     EXPECT_EQ(negative.hi, 0.0);
+    const Interval partly = Interval(1e-160, 1e-100) * Interval(1e-160, 1e-150);
+    EXPECT_EQ(partly.lo, 0.0);
+    EXPECT_GE(partly.hi, 1e-250);
+}
+
+TEST(IntervalMpfi, NoBoundIsSubnormal) {
+    // Products and exponentials near the smallest normal double: enclosed
+    // (long double holds these values exactly enough), and never a
+    // subnormal bound, whose arithmetic costs a microcode assist.
+    const auto normal_or_zero = [](double v) { return std::fpclassify(v) != FP_SUBNORMAL; };
+    for (double x = -709.5; x <= -707.5; x += 1.0 / 64.0) {
+        const Interval e = exp(Interval(x));
+        const long double want = std::exp(static_cast<long double>(x));
+        ASSERT_TRUE(e.lo <= want && want <= e.hi) << "exp(" << x << ")";
+        ASSERT_TRUE(normal_or_zero(e.lo) && normal_or_zero(e.hi)) << "exp(" << x << ")";
+        for (const double factor : {1.0, 0.5, 1e-3, 1e-300}) {
+            const Interval p = e * Interval(factor);
+            const long double exact = want * static_cast<long double>(factor);
+            ASSERT_TRUE(p.lo <= exact && exact <= p.hi) << "exp(" << x << ") * " << factor;
+            ASSERT_TRUE(normal_or_zero(p.lo) && normal_or_zero(p.hi)) << "exp(" << x << ") * " << factor;
+        }
+    }
 }
 
 /// The exact range of a / b over b's nonzero part (MPFI answers ℝ for a divisor

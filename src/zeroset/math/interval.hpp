@@ -47,6 +47,17 @@ inline double up2(double x) { return up(up(x)); }
 /// microcode assist per operation), and 0 + 0 would otherwise seed them.
 inline double exact_zero_down(double x) { return x == 0.0 ? 0.0 : down(x); }
 inline double exact_zero_up(double x) { return x == 0.0 ? 0.0 : up(x); }
+/// The bounds of a product (detail::product): an exact 0 stays 0, and a
+/// result below the smallest normal double in magnitude — an underflow —
+/// widens to 0 or ±that normal, never to a subnormal: a chain of tiny
+/// factors (exp falloffs multiplied together) would otherwise carry
+/// subnormals into every later operation.
+inline double product_down(double p) {
+    constexpr double tiny = std::numeric_limits<double>::min();
+    if (p > tiny || p <= -tiny || p != p) return down(p);
+    return p >= 0.0 ? 0.0 : -tiny;
+}
+inline double product_up(double p) { return -product_down(-p); }
 }  // namespace rounding
 
 struct Interval {
@@ -85,7 +96,7 @@ inline Interval operator-(Interval a) { return {-a.hi, -a.lo}; }
 namespace detail {
 /// Product with 0 × ∞ = 0, the interval-arithmetic convention. A product
 /// that underflows to 0 is not exact: it becomes the smallest subnormal of
-/// its sign, so that a 0 here means exactly 0 (rounding::exact_zero_*).
+/// its sign, so that a 0 here means exactly 0 (rounding::product_*).
 inline double product(double a, double b) {
     if (a == 0.0 || b == 0.0) return 0.0;
     const double p = a * b;
@@ -98,7 +109,7 @@ inline Interval operator*(Interval a, Interval b) {
     if (a.is_empty() || b.is_empty()) return Interval::empty();
     const double p0 = detail::product(a.lo, b.lo), p1 = detail::product(a.lo, b.hi);
     const double p2 = detail::product(a.hi, b.lo), p3 = detail::product(a.hi, b.hi);
-    return {rounding::exact_zero_down(std::min({p0, p1, p2, p3})), rounding::exact_zero_up(std::max({p0, p1, p2, p3}))};
+    return {rounding::product_down(std::min({p0, p1, p2, p3})), rounding::product_up(std::max({p0, p1, p2, p3}))};
 }
 
 /// Division; a divisor that contains 0 gives the sound (extended) answer.
@@ -158,7 +169,12 @@ inline Interval sqrt(Interval a) {
 
 inline Interval exp(Interval a) {
     if (a.is_empty()) return a;
-    return {std::max(0.0, rounding::down2(std::exp(a.lo))), rounding::up2(std::exp(a.hi))};
+    // Below e^−708.3, just above the smallest normal double, a bound is 0
+    // or 2.5·10⁻³⁰⁸ (> e^−708.3): no subnormal, as for products.
+    constexpr double normal_edge = -708.3;
+    const double lo = a.lo < normal_edge ? 0.0 : std::max(0.0, rounding::down2(std::exp(a.lo)));
+    const double hi = a.hi < normal_edge ? 2.5e-308 : rounding::up2(std::exp(a.hi));
+    return {lo, hi};
 }
 
 inline Interval log(Interval a) {
