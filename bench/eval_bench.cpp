@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include "fma_ceiling.hpp"
@@ -73,6 +74,29 @@ void BM_PointEvaluator_Bear(benchmark::State& state) {
 }
 BENCHMARK(BM_PointEvaluator_Bear<double>)->Arg(256);
 BENCHMARK(BM_PointEvaluator_Bear<zeroset::Interval>)->Arg(256);
+
+/// Interval and gradient enclosures over boxes of side 0.05, as an octree
+/// cell or a segment's box sees them (point intervals skip the sign cases).
+template <class T>
+void BM_BoxEvaluator_Bear(benchmark::State& state) {
+    using zeroset::Interval;
+    const Tape& tape = bear_tape();
+    const auto n = static_cast<std::size_t>(state.range(0));
+    Points<double> p(n);
+    zeroset::Evaluator<T> eval(tape);
+    const auto box = [](double v) { return Interval(v, v + 0.05); };
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < n; ++i) {
+            if constexpr (std::is_same_v<T, Interval>)
+                benchmark::DoNotOptimize(eval(box(p.x[i]), box(p.y[i]), box(p.z[i])));
+            else
+                benchmark::DoNotOptimize(eval(T::variable(box(p.x[i]), 0), T::variable(box(p.y[i]), 1), T::variable(box(p.z[i]), 2)));
+        }
+    }
+    set_rate(state, tape.clauses().size(), n);
+}
+BENCHMARK(BM_BoxEvaluator_Bear<zeroset::Interval>)->Arg(256);
+BENCHMARK(BM_BoxEvaluator_Bear<zeroset::Dual<zeroset::Interval>>)->Arg(256);
 
 /// The ceiling (bench/fma_ceiling.hpp): for each clause of the tape, one
 /// multiply-add over a batch of lanes held in cache — what the batch

@@ -105,11 +105,26 @@ inline double product(double a, double b) {
 }
 }  // namespace detail
 
+namespace detail {
+/// The product where a bound is 0, below the smallest normal, or 0 × ∞.
+inline Interval careful_product(Interval a, Interval b) {
+    const double p0 = product(a.lo, b.lo), p1 = product(a.lo, b.hi);
+    const double p2 = product(a.hi, b.lo), p3 = product(a.hi, b.hi);
+    return {rounding::product_down(std::min({p0, p1, p2, p3})), rounding::product_up(std::max({p0, p1, p2, p3}))};
+}
+}  // namespace detail
+
+/// The four products, and their min and max stepped outward, without a
+/// branch in the usual case where every product is a normal double or
+/// infinite; zeros, underflows and 0 × ∞ take detail::careful_product.
 inline Interval operator*(Interval a, Interval b) {
     if (a.is_empty() || b.is_empty()) return Interval::empty();
-    const double p0 = detail::product(a.lo, b.lo), p1 = detail::product(a.lo, b.hi);
-    const double p2 = detail::product(a.hi, b.lo), p3 = detail::product(a.hi, b.hi);
-    return {rounding::product_down(std::min({p0, p1, p2, p3})), rounding::product_up(std::max({p0, p1, p2, p3}))};
+    const double p0 = a.lo * b.lo, p1 = a.lo * b.hi, p2 = a.hi * b.lo, p3 = a.hi * b.hi;
+    const double lo = std::min({p0, p1, p2, p3}), hi = std::max({p0, p1, p2, p3});
+    constexpr double tiny = std::numeric_limits<double>::min();
+    if (std::abs(lo) > tiny && std::abs(hi) > tiny && !std::isnan(p0 + p1 + p2 + p3))
+        return {rounding::down(lo), rounding::up(hi)};
+    return detail::careful_product(a, b);
 }
 
 /// Division; a divisor that contains 0 gives the sound (extended) answer.
