@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "zeroset/expr/functions.hpp"
 #include "zeroset/expr/shapes.hpp"
@@ -29,6 +30,37 @@ TEST(SphereMethod, HitsTheUnitSphereAlongALongDirection) {
         ASSERT_TRUE(hit.t.has_value()) << "|x_d| = " << length;
         EXPECT_NEAR(*hit.t * length, 8.9, 1e-12) << "|x_d| = " << length;
     }
+}
+
+TEST(SphereMethod, AStepThatLandsOnTheRootByAnExactBoundStillHits) {
+    // Planes: H is linear and its Lipschitz bound exact (|n·x_d|), so a step
+    // H/L lands on the root — or a few ulps past it by the rounding of H,
+    // where the march must still report the crossing it stepped onto.
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Vec3d n = normalize(Vec3d{u(rng), u(rng), u(rng)});
+        const double c = 0.5 * u(rng);
+        const Tape tape(n.x * var_x() + n.y * var_y() + n.z * var_z() - c);
+        const Bounds bounds = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+        const Vec3d from = 3.0 * normalize(Vec3d{u(rng), u(rng), u(rng)});
+        const Ray ray{from, normalize(Vec3d{0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)} - from)};
+        const auto span = bounds.clip(ray, 0.0, INFINITY);
+        if (!span) continue;
+        RayFunction h(tape);
+        h.set_ray(ray);
+        TraceCounters counters;
+        const double h0 = h.value(span->t0, counters), h1 = h.value(span->t1, counters);
+        if (!(h0 > 0.0 && h1 < 0.0)) continue;  // entering the half-space within the box
+        const double root = span->t0 + (span->t1 - span->t0) * h0 / (h0 - h1);
+        const HitResult hit = make_root_finder(Method::Sphere, tape, settings_for_scale(bounds.box.diagonal()))
+                                  ->first_hit(h, *span, counters);
+        ASSERT_TRUE(hit.t.has_value()) << "ray " << i;
+        EXPECT_NEAR(*hit.t, root, 1e-9) << "ray " << i;
+        ++hits;
+    }
+    EXPECT_GT(hits, 300);
 }
 
 }  // namespace

@@ -57,11 +57,11 @@ public:
     Interval enclose_value(double t, TraceCounters& counters);
     /// Enclosures of H, H′ and H″ over t ∈ [a, b].
     Jet<Interval> enclose(double a, double b, TraceCounters& counters);
-    /// A Lipschitz bound of H over t ∈ [a, b]: L·|x_d|, where L bounds |∇f|
-    /// over the box around the segment (expr/lipschitz.hpp, eq. 30); +∞
-    /// where ∇f has no finite enclosure. (The enclosure of H′ from enclose()
-    /// is a bound too, often tighter, but Jet<Interval> costs about 1.7 times
-    /// Dual<Interval> on bear.vm, which more than eats the saved steps.)
+    /// A Lipschitz bound of H over t ∈ [a, b] (eq. 30 along the ray): the
+    /// largest |∇f·x_d| over the box around the segment, by a directional
+    /// dual (math/dual.hpp) — at most L·|x_d| with L bounding |∇f|, and about
+    /// a third of a gradient's cost; +∞ where it has no finite enclosure.
+    /// (enclose() bounds H′ too, but Jet<Interval> also carries H″.)
     double lipschitz(double a, double b, TraceCounters& counters);
 
     /// Prunes the tape to the axis-aligned box around the ray over [a, b]
@@ -104,7 +104,7 @@ private:
     Evaluator<Jet<double>> jet_;
     Evaluator<Interval> value_enclosure_;
     Evaluator<Jet<Interval>> enclosure_;
-    Evaluator<Dual<Interval>> slope_;
+    Evaluator<DirectionalDual<Interval>> slope_;
     std::optional<TapePruner> pruner_;  // made on the first prune()
     std::vector<Tape> pruned_;          // pruned_[d]: the tape pruned at depth d, if any
     std::vector<const Tape*> tape_at_;  // the tape in use at depth d: pruned_[d] or its parent's

@@ -17,6 +17,29 @@ double SphereTracer::step_epsilon(const RayFunction& h, double t) const {
 
 Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounters& counters) const {
     const auto value_at = [&](double t) { return side * h.value(t, counters); };
+    // The last point marched to where f > 0: the ray is clear up to it.
+    double clear_to = span.t0;
+    // f ≤ 0 at t, reached by a step or as a segment's start: the crossing is
+    // in (clear_to, t]. A step of H/L lands on the root exactly when L is
+    // tight, and past it by the rounding of H, so t is usually a few ulps
+    // beyond: one probe ε back confirms it; else bisection narrows the
+    // bracket to 2ε, which the caller refines.
+    const auto crossing_before = [&](double t, double eps) -> Crossing {
+        if (!(t > clear_to)) return {t};
+        double lo = clear_to, hi = t;
+        if (const double back = t - eps; back > lo) {
+            const double f = value_at(back);
+            if (std::isnan(f)) return {};
+            (f > 0.0 ? lo : hi) = back;
+        }
+        for (int i = 0; i < 128 && hi - lo > 2.0 * eps; ++i) {
+            const double mid = 0.5 * lo + 0.5 * hi;
+            const double f = value_at(mid);
+            if (std::isnan(f)) return {};
+            (f > 0.0 ? lo : hi) = mid;
+        }
+        return {lo};
+    };
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
     for (long visited = 0; !segments.empty(); ++visited) {
@@ -47,12 +70,16 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
             // pole, where f changes sign without one (−1/x at x = 0).
             const double fa = value_at(a);
             if (std::isnan(fa)) return {};
-            if (fa <= 0.0) return {a};
+            if (fa <= 0.0) return crossing_before(a, eps);
+            clear_to = a;
             const double fb = value_at(b);
             if (std::isnan(fb)) return {};
             if (fb <= 0.0) {
                 const bool unbounded = !std::isfinite(value.lo) || !std::isfinite(value.hi);
-                if (unbounded && closes_in_on_a_pole(h, a, b, counters)) continue;
+                if (unbounded && closes_in_on_a_pole(h, a, b, counters)) {
+                    clear_to = b;  // the sign changed across a pole, not a root: never look back past it
+                    continue;
+                }
                 return {a};  // the crossing is in [a, b], within the 2ε the caller refines
             }
             continue;
@@ -61,7 +88,8 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
         for (int steps = 0;; ++steps) {
             const double f = value_at(t);
             if (std::isnan(f)) return {};
-            if (f <= 0.0) return {t};  // on or inside the surface (only at a segment's start)
+            if (f <= 0.0) return crossing_before(t, eps);  // on or inside the surface
+            clear_to = t;
             if (f < lipschitz * eps) {
                 // Fig. 12, step 2a: the distance bound says the surface may be
                 // within ε. A sign change just ahead confirms it; otherwise L
@@ -69,7 +97,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
                 const double ahead = t + 2.0 * eps;
                 const double f_ahead = value_at(ahead);
                 if (std::isnan(f_ahead)) return {};
-                if (f_ahead <= 0.0) return {t};
+                if (f_ahead <= 0.0) return {t};  // the crossing is in [t, t + 2ε]
                 if (b - ahead > 2.0 * eps && segments.can_split(segment)) {
                     segments.split(segment, ahead);
                     break;
