@@ -115,5 +115,19 @@ TEST(BlobScenes, ASumOfGaussiansIsTracedAsABlobWithinItsBounds) {
     }
 }
 
+TEST(BlobScenes, ASumOfGaussiansTheBlobCannotTakeIsTracedAsWritten) {
+    // No term adds to the field (f = 1 + e^(−r²) > 0: nothing to see): as an
+    // expression, not an error.
+    const Scene scene = parse_scene("object \"none\" { surface 1 + exp(-(x^2 + y^2 + z^2))  bounds box((-2, -2, -2), (2, 2, 2)) }\n"
+                                    "object \"ball\" { surface x^2 + y^2 + z^2 - 0.25 }\n",
+                                    "gaussians.zs", ".");
+    RenderSettings settings;
+    settings.width = 32;
+    settings.height = 24;
+    const RenderResult r = render(scene, settings);
+    EXPECT_TRUE(r.stats.blobs.empty()) << r.stats.blobs;
+    EXPECT_GT(covered(test::coverage(scene, settings)), 0.0);
+}
+
 }  // namespace
 }  // namespace zeroset

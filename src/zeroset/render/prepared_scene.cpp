@@ -191,7 +191,9 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             // A sum of Gaussians written out is Blinn's blob: traced as one,
             // within the object's bounds.
             std::shared_ptr<const BlobModel> recognised;
-            if (!o.blob && method == Method::Auto && !o.open && !o.clip && o.bounds.kind != Bounds::Kind::None)
+            const Partition partition = overrides_.partition.value_or(o.partition);
+            if (!o.blob && method == Method::Auto && partition == Partition::Auto && !o.open && !o.clip &&
+                o.bounds.kind != Bounds::Kind::None)
                 if (auto model = gaussian_sum_as_blob(o.surface))
                     recognised = std::make_shared<const BlobModel>(std::move(*model));
             if ((o.blob || recognised) && method == Method::Auto) {  // the blob's own path
@@ -199,22 +201,25 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
                 b.name = name;
                 b.model = recognised ? recognised : o.blob;
                 b.from_expression = recognised != nullptr;
-                if (recognised) {
-                    b.clip = o.bounds;
-                    if (!o.cut_by_bounds) warn_of_cut(*node, name, Tape(o.surface));
-                }
+                if (recognised) b.clip = o.bounds;
                 b.material = around;
                 b.tolerance = o.blob_tolerance;
                 b.metaball_quadratics = o.blob_quadratics;
-                around = no_material;
+                std::shared_ptr<const Blob> blob;
                 try {
-                    auto blob = std::make_shared<const Blob>(std::move(b));
+                    blob = std::make_shared<const Blob>(std::move(b));
+                } catch (const std::invalid_argument& e) {
+                    // A sum of Gaussians the blob cannot take (no positive
+                    // term, a reach beyond doubles) is traced as written.
+                    if (!recognised) throw RenderError("blob '" + name + "': " + e.what());
+                }
+                if (blob) {
+                    if (recognised && !o.cut_by_bounds) warn_of_cut(*node, name, Tape(o.surface));
+                    around = no_material;
                     blobs_.push_back(blob.get());
                     primitive = std::move(blob);
-                } catch (const std::invalid_argument& e) {
-                    throw RenderError("blob '" + name + "': " + e.what());
+                    break;
                 }
-                break;
             }
             LeafDescription d;
             d.name = name;
@@ -223,7 +228,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             d.method = method;
             d.solver = overrides_.solver.value_or(o.solver);
             d.normals = overrides_.normals.value_or(o.normals);
-            d.partition = overrides_.partition.value_or(o.partition);
+            d.partition = partition;
             d.open = o.open;
             d.clip = o.clip;
             if (const auto f = footprints_.find(node.get()); f != footprints_.end()) d.footprint_pixels = f->second;
