@@ -80,7 +80,8 @@ public:
     /// Throws std::invalid_argument for a tolerance outside (0, 1).
     explicit Blob(BlobDescription description);
 
-    [[nodiscard]] Box3 bounds() const override { return bounds_; }
+    /// Its reach within its clip; a point when they do not meet (as CsgNode's empty intersection).
+    [[nodiscard]] Box3 bounds() const override { return bounds_.valid() ? bounds_ : Box3{{0, 0, 0}, {0, 0, 0}}; }
     std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
     /// ∇f of the components in reach of the point, normalised.

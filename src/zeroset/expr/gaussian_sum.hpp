@@ -6,7 +6,8 @@
 // Gaussians walked as one tape evaluates every kernel at every point, while
 // the blob meets only the few in reach along each ray — 50 atoms render
 // about ten times faster that way. Each term becomes a component of radius
-// 1/√kᵢ and blobbiness −1, the same function up to rounding.
+// 1/√kᵢ and blobbiness −1, the same function up to rounding; the blob then
+// cuts each Gaussian off far out (docs/blobs.md, Blinn's cut-off).
 #pragma once
 
 #include <optional>

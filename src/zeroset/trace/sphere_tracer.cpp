@@ -26,6 +26,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
     // bracket to 2ε, which the caller refines.
     const auto crossing_before = [&](double t, double eps) -> Crossing {
         if (!(t > clear_to)) return {t};
+        h.use_full_tape();  // the probes may leave the segment's box, where its pruned tape does not hold
         double lo = clear_to, hi = t;
         if (const double back = t - eps; back > lo) {
             const double f = value_at(back);
