@@ -118,6 +118,10 @@ TEST(PovDirectives, ErrorsAreLocated) {
     std::string unions;
     for (int i = 0; i < 300; ++i) unions += "union { ";
     EXPECT_NE(error_of(unions).find("nested more than 200 deep"), std::string::npos);
+    // A call in a call's arguments, however it is reached (found by the fuzzer: a stack overflow).
+    std::string calls = "#macro B(P) sphere { P, 1 } #end\nobject { ";
+    for (int i = 0; i < 3000; ++i) calls += "B(";
+    EXPECT_EQ(error_of(calls), "scene.pov:2:408: macro calls nested in their arguments more than 200 deep");
 }
 
 TEST(PovDirectives, UnusedDeclarationsSayNothingUsedOnesWarn) {

@@ -511,6 +511,14 @@ void PovParser::define_macro(const PovToken& keyword) {
 
 void PovParser::call_macro(const PovToken& name, const Macro& macro) {
     if (macro_depth_ >= max_macro_depth) fail(name, "macros call each other more than 200 deep");
+    // The arguments are read before the body runs, so a call in a call's
+    // arguments recurses here without a macro depth: it counts as nesting.
+    if (nesting_ >= max_nesting) fail(name, "macro calls nested in their arguments more than 200 deep");
+    ++nesting_;
+    const struct Unnest {
+        int& nesting;
+        ~Unnest() { --nesting; }
+    } unnest{nesting_};
     std::unordered_map<std::string, PovValue> arguments;
     expect_symbol("(", "after the macro " + name.text);
     for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
