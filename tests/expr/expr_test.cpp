@@ -1,6 +1,7 @@
 // Expr: hash-consing, canonical order of commutative ops, constant folding and
 // the builders' small simplifications.
 #include "zeroset/expr/expr.hpp"
+#include "zeroset/expr/functions.hpp"
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/tape.hpp"
 

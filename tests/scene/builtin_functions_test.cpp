@@ -7,14 +7,20 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scene_test_support.hpp"
 #include "zeroset/expr/deform.hpp"
 #include "zeroset/expr/functions.hpp"
 #include "zeroset/expr/shapes.hpp"
+#include "zeroset/scene/expression_parser.hpp"
+#include "zeroset/scene/wording.hpp"
 
 namespace zeroset {
 namespace {
@@ -44,6 +50,57 @@ TEST(BuiltinFunctions, MathFunctionsEvaluateTheirFormulas) {
               smooth_union(X, Y, 0.5) + smooth_intersection(X, Z, 0.25) - smooth_difference(Y, Z, 1.0));
     EXPECT_EQ(surface("algebraic_blend(x^2 + z^2 - 1, y, 0.5, 0.25)"),
               algebraic_blend(powi(X, 2) + powi(Z, 2) - 1.0, Y, 0.5, 0.25));
+}
+
+/// The constant a scene expression reads as (the parser keeps constants as doubles).
+double constant_of(const std::string& text) {
+    const Value value = evaluate_expression_text(text, {}, "<test>", ".");
+    EXPECT_TRUE(value.is_constant()) << text;
+    return value.constant();
+}
+
+/// Equal bit for bit, or both NaN.
+::testing::AssertionResult same_double(double a, double b) {
+    if (std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) || (std::isnan(a) && std::isnan(b)))
+        return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << std::hexfloat << a << " != " << b;
+}
+
+TEST(BuiltinFunctions, CallsOnConstantsFoldToTheConstantTheExpressionBuilds) {
+    // The parser computes calls and operators on constants in doubles; the
+    // reference is the C++ builder over Expr constants, which folds each step.
+    const std::vector<double> values{-7.25, -2.0, -1.0, -0.3, 0.0, 0.5, 1.1, 2.0, 3.0, 7.0, 1e10};
+    for (const double a : values) {
+        const std::string sa = "(" + format_number(a) + ")";
+        const Expr ea(a);
+        const std::vector<std::pair<std::string, Expr>> unary{
+            {"sqrt", sqrt(ea)}, {"abs", abs(ea)},     {"exp", exp(ea)},     {"log", log(ea)},
+            {"sin", sin(ea)},   {"cos", cos(ea)},     {"tan", tan(ea)},     {"atan", atan(ea)},
+            {"floor", floor(ea)}, {"ceil", ceil(ea)}, {"square", square(ea)}, {"-", -ea}};
+        for (const auto& [f, expected] : unary)
+            EXPECT_TRUE(same_double(constant_of(f + sa), expected.value())) << f << sa;
+        for (const double b : values) {
+            const std::string sb = "(" + format_number(b) + ")";
+            const Expr eb(b);
+            const std::string pair = "(" + sa + ", " + sb + ")";
+            EXPECT_TRUE(same_double(constant_of("pow" + pair), pow(ea, eb).value())) << a << " ^ " << b;
+            EXPECT_TRUE(same_double(constant_of(sa + " ^ " + sb), pow(ea, eb).value())) << a << " ^ " << b;
+            EXPECT_TRUE(same_double(constant_of("mod" + pair), mod(ea, eb).value())) << a << " mod " << b;
+            EXPECT_TRUE(same_double(constant_of("atan2" + pair), atan2(ea, eb).value()));
+            EXPECT_TRUE(same_double(constant_of("hypot" + pair), hypot(ea, eb).value()));
+            EXPECT_TRUE(same_double(constant_of("log_sum_exp" + pair), log_sum_exp(ea, eb).value()));
+            EXPECT_TRUE(same_double(constant_of(sa + " / " + sb + " - " + sa + " * " + sb + " + " + sb),
+                                    (ea / eb - ea * eb + eb).value()));
+            const std::string triple = "(" + sa + ", " + sb + ", 0.75)";
+            EXPECT_TRUE(same_double(constant_of("min" + triple), min(min(ea, eb), Expr(0.75)).value()));
+            EXPECT_TRUE(same_double(constant_of("clamp" + triple), clamp(ea, eb, Expr(0.75)).value()));
+            EXPECT_TRUE(same_double(constant_of("mix" + triple), mix(ea, eb, Expr(0.75)).value()));
+            if (a != b) {
+                EXPECT_TRUE(same_double(constant_of("smoothstep(" + sa + ", " + sb + ", 0.75)"),
+                                        smoothstep(ea, eb, Expr(0.75)).value()));
+            }
+        }
+    }
 }
 
 TEST(BuiltinFunctions, ShapesAndTheirPoint) {

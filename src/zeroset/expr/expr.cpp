@@ -309,19 +309,31 @@ Expr atan2(const Expr& y, const Expr& x) { return Expr::make(Op::Atan2, y, x); }
 Expr floor(const Expr& a) { return Expr::make(Op::Floor, a); }
 Expr hypot(const Expr& a, const Expr& b) { return Expr::make(Op::Hypot, a, b); }
 Expr log_sum_exp(const Expr& a, const Expr& b) { return Expr::make(Op::LogSumExp, a, b); }
-Expr ceil(const Expr& a) { return -floor(-a); }
 Expr powi(const Expr& a, int n) {
     if (n == 0) return Expr(1.0);
     if (n == 1) return a;
     if (n == 2) return square(a);
     return Expr::make(Op::Powi, a, Expr(), n);
 }
+namespace {
+
+/// The exponent n when a^b is built as powi(a, n): b integral, |b| ≤ 1024.
+std::optional<int> powi_exponent(double b) {
+    if (b == std::round(b) && std::abs(b) <= 1024.0) return static_cast<int>(b);
+    return std::nullopt;
+}
+
+}  // namespace
+
 Expr pow(const Expr& a, const Expr& b) {
     if (b.is_constant()) {
-        const double p = b.value();
-        if (p == std::round(p) && std::abs(p) <= 1024.0) return powi(a, static_cast<int>(p));
+        if (const std::optional<int> n = powi_exponent(b.value())) return powi(a, *n);
     }
     return Expr::make(Op::Pow, a, b);
+}
+double pow_constant(double a, double b) {
+    const std::optional<int> n = powi_exponent(b);
+    return n ? apply_op<double>(Op::Powi, a, 0.0, *n) : apply_op<double>(Op::Pow, a, b, 0);
 }
 Expr min(const Expr& a, const Expr& b) { return a == b ? a : Expr::make(Op::Min, a, b); }
 Expr max(const Expr& a, const Expr& b) { return a == b ? a : Expr::make(Op::Max, a, b); }

@@ -130,12 +130,12 @@ Expr hypot(const Expr& a, const Expr& b);
 /// models written out as ln(exp(a) + exp(b)) get its tight enclosures and
 /// lose the overflow of eᵃ.
 Expr log_sum_exp(const Expr& a, const Expr& b);
-/// ⌈a⌉ = −⌊−a⌋ (no op of its own).
-Expr ceil(const Expr& a);
 /// a^n for an integer n (square for n = 2).
 Expr powi(const Expr& a, int n);
 /// a^b; an integral constant b becomes powi.
 Expr pow(const Expr& a, const Expr& b);
+/// a^b over constants, as pow(Expr(a), Expr(b)) folds it: powi for an integral b.
+double pow_constant(double a, double b);
 Expr min(const Expr& a, const Expr& b);
 Expr max(const Expr& a, const Expr& b);
 

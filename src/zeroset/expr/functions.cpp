@@ -7,17 +7,6 @@
 
 namespace zeroset {
 
-Expr mod(const Expr& a, const Expr& b) { return a - b * floor(a / b); }
-
-Expr clamp(const Expr& a, const Expr& lo, const Expr& hi) { return min(max(a, lo), hi); }
-
-Expr mix(const Expr& a, const Expr& b, const Expr& t) { return a + (b - a) * t; }
-
-Expr smoothstep(const Expr& e0, const Expr& e1, const Expr& a) {
-    const Expr s = clamp((a - e0) / (e1 - e0), 0.0, 1.0);
-    return square(s) * (3.0 - 2.0 * s);
-}
-
 Expr smooth_union(const Expr& a, const Expr& b, double k) {
     if (!(k > 0.0)) throw std::invalid_argument("the blend radius k must be positive");
     return min(a, b) - square(max(k - abs(a - b), 0.0)) / (4.0 * k);

@@ -10,15 +10,35 @@
 
 namespace zeroset {
 
+// The composites are written once, as templates over the number they
+// build: Expr for a function of x, y, z, double for the scene parser, which
+// evaluates calls on constants without making a node per step. Over doubles
+// each step is the op table's, as Expr's constant folding takes it, so both
+// give the same constant.
+namespace composite {
+
+template <class T> T mod(const T& a, const T& b) { return a - b * floor(a / b); }
+template <class T> T clamp(const T& a, const T& lo, const T& hi) { return min(max(a, lo), hi); }
+template <class T> T mix(const T& a, const T& b, const T& t) { return a + (b - a) * t; }
+template <class T> T smoothstep(const T& e0, const T& e1, const T& a) {
+    const T s = clamp<T>((a - e0) / (e1 - e0), T(0.0), T(1.0));
+    return square(s) * (T(3.0) - T(2.0) * s);
+}
+template <class T> T ceil(const T& a) { return -floor(-a); }
+
+}  // namespace composite
+
 /// a − b·⌊a/b⌋: the remainder with the sign of b (GLSL's mod); NaN for b = 0.
-Expr mod(const Expr& a, const Expr& b);
+inline Expr mod(const Expr& a, const Expr& b) { return composite::mod(a, b); }
 /// min(max(a, lo), hi).
-Expr clamp(const Expr& a, const Expr& lo, const Expr& hi);
+inline Expr clamp(const Expr& a, const Expr& lo, const Expr& hi) { return composite::clamp(a, lo, hi); }
 /// a + (b − a)·t: a at t = 0, b at t = 1.
-Expr mix(const Expr& a, const Expr& b, const Expr& t);
+inline Expr mix(const Expr& a, const Expr& b, const Expr& t) { return composite::mix(a, b, t); }
 /// 0 for a ≤ e0, 1 for a ≥ e1, and the Hermite step s²(3 − 2s) with
 /// s = (a − e0)/(e1 − e0) between (GLSL's smoothstep; e0 ≠ e1).
-Expr smoothstep(const Expr& e0, const Expr& e1, const Expr& a);
+inline Expr smoothstep(const Expr& e0, const Expr& e1, const Expr& a) { return composite::smoothstep(e0, e1, a); }
+/// ⌈a⌉ = −⌊−a⌋ (no op of its own).
+inline Expr ceil(const Expr& a) { return composite::ceil(a); }
 
 // Smooth CSG on functions negative inside, with a blend radius k > 0 (a
 // constant): the polynomial smooth minimum

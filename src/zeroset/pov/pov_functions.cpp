@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "zeroset/expr/functions.hpp"
 #include "zeroset/expr/shapes.hpp"
 #include "zeroset/expr/substitute.hpp"
 #include "zeroset/pov/pov_parser.hpp"

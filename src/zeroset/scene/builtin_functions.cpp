@@ -2,11 +2,14 @@
 #include "zeroset/scene/builtin_functions.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "zeroset/expr/deform.hpp"
@@ -37,8 +40,8 @@ public:
 
     [[nodiscard]] std::size_t count() const { return given_.size(); }
     [[nodiscard]] bool has(std::size_t i) const { return i < given_.size(); }
-    [[nodiscard]] const Expr& number(std::size_t i) const { return given_[i].value.number(); }
-    [[nodiscard]] double constant(std::size_t i) const { return number(i).value(); }
+    [[nodiscard]] Expr number(std::size_t i) const { return given_[i].value.number(); }
+    [[nodiscard]] double constant(std::size_t i) const { return given_[i].value.constant(); }
     [[nodiscard]] double constant_or(std::size_t i, double otherwise) const { return has(i) ? constant(i) : otherwise; }
     [[nodiscard]] Vec3d vector(std::size_t i) const {
         const ExprVector& v = given_[i].value.vector();
@@ -61,6 +64,10 @@ struct Builtin {
     std::size_t required;  // the first `required` parameters must be given; the others are optional, in order
     bool repeats;          // the last parameter may be given any number of times more (min, max)
     Expr (*build)(const Arguments& args);
+    // A function of numbers only has its body twice, made from one generic
+    // lambda: over expressions and over constants (fold_builtin_function).
+    Expr (*numbers)(std::span<const Expr> args) = nullptr;
+    double (*fold)(std::span<const double> args) = nullptr;
 
     [[nodiscard]] bool accepts(std::size_t count) const {
         return count >= required && (repeats || count <= parameters.size());
@@ -86,17 +93,27 @@ struct Builtin {
 
 constexpr Kind N = Kind::Number, C = Kind::Constant, V = Kind::Vector, P = Kind::Point;
 
-/// A function of numbers only.
-Builtin math(std::string_view name, std::vector<std::string_view> parameters, Expr (*build)(const Arguments&)) {
+/// A function of numbers only, `body` a generic lambda over a span of
+/// Exprs or of doubles; `repeats` as in Builtin (min and max).
+template <class Body>
+Builtin math(std::string_view name, std::vector<std::string_view> parameters, Body body, bool repeats = false) {
     std::vector<Parameter> ps;
     for (const std::string_view p : parameters) ps.push_back({p, N});
     const std::size_t required = ps.size();
-    return {name, std::move(ps), required, false, build};
+    Builtin entry{name, std::move(ps), required, repeats, nullptr};
+    entry.numbers = body;
+    entry.fold = body;
+    return entry;
 }
 
-Expr fold(const Arguments& a, Expr (*combine)(const Expr&, const Expr&)) {
-    Expr result = a.number(0);
-    for (std::size_t i = 1; i < a.count(); ++i) result = combine(result, a.number(i));
+/// a^b as the expression builder makes it, over either kind of number.
+Expr power(const Expr& a, const Expr& b) { return pow(a, b); }
+double power(double a, double b) { return pow_constant(a, b); }
+
+/// min or max over every argument, left to right.
+template <class T, class Combine> T fold_left(std::span<const T> a, Combine combine) {
+    T result = a[0];
+    for (std::size_t i = 1; i < a.size(); ++i) result = combine(result, a[i]);
     return result;
 }
 
@@ -104,28 +121,28 @@ const std::vector<Builtin>& table() {
     using A = const Arguments&;
     static const std::vector<Builtin> builtins{
         // The op table and composites of numbers.
-        math("sqrt", {"a"}, [](A a) { return sqrt(a.number(0)); }),
-        math("abs", {"a"}, [](A a) { return abs(a.number(0)); }),
-        math("exp", {"a"}, [](A a) { return exp(a.number(0)); }),
-        math("log", {"a"}, [](A a) { return log(a.number(0)); }),
-        math("ln", {"a"}, [](A a) { return log(a.number(0)); }),
-        math("sin", {"a"}, [](A a) { return sin(a.number(0)); }),
-        math("cos", {"a"}, [](A a) { return cos(a.number(0)); }),
-        math("tan", {"a"}, [](A a) { return tan(a.number(0)); }),
-        math("atan", {"a"}, [](A a) { return atan(a.number(0)); }),
-        math("atan2", {"y", "x"}, [](A a) { return atan2(a.number(0), a.number(1)); }),
-        math("floor", {"a"}, [](A a) { return floor(a.number(0)); }),
-        math("ceil", {"a"}, [](A a) { return ceil(a.number(0)); }),
-        math("square", {"a"}, [](A a) { return square(a.number(0)); }),
-        math("pow", {"a", "b"}, [](A a) { return pow(a.number(0), a.number(1)); }),
-        math("hypot", {"a", "b"}, [](A a) { return hypot(a.number(0), a.number(1)); }),
-        math("log_sum_exp", {"a", "b"}, [](A a) { return log_sum_exp(a.number(0), a.number(1)); }),
-        {"min", {{"a", N}, {"b", N}}, 2, true, [](A a) { return fold(a, min); }},
-        {"max", {{"a", N}, {"b", N}}, 2, true, [](A a) { return fold(a, max); }},
-        math("mod", {"a", "b"}, [](A a) { return mod(a.number(0), a.number(1)); }),
-        math("clamp", {"a", "lo", "hi"}, [](A a) { return clamp(a.number(0), a.number(1), a.number(2)); }),
-        math("mix", {"a", "b", "t"}, [](A a) { return mix(a.number(0), a.number(1), a.number(2)); }),
-        math("smoothstep", {"e0", "e1", "a"}, [](A a) { return smoothstep(a.number(0), a.number(1), a.number(2)); }),
+        math("sqrt", {"a"}, [](auto a) { return sqrt(a[0]); }),
+        math("abs", {"a"}, [](auto a) { return abs(a[0]); }),
+        math("exp", {"a"}, [](auto a) { return exp(a[0]); }),
+        math("log", {"a"}, [](auto a) { return log(a[0]); }),
+        math("ln", {"a"}, [](auto a) { return log(a[0]); }),
+        math("sin", {"a"}, [](auto a) { return sin(a[0]); }),
+        math("cos", {"a"}, [](auto a) { return cos(a[0]); }),
+        math("tan", {"a"}, [](auto a) { return tan(a[0]); }),
+        math("atan", {"a"}, [](auto a) { return atan(a[0]); }),
+        math("atan2", {"y", "x"}, [](auto a) { return atan2(a[0], a[1]); }),
+        math("floor", {"a"}, [](auto a) { return floor(a[0]); }),
+        math("ceil", {"a"}, [](auto a) { return composite::ceil(a[0]); }),
+        math("square", {"a"}, [](auto a) { return square(a[0]); }),
+        math("pow", {"a", "b"}, [](auto a) { return power(a[0], a[1]); }),
+        math("hypot", {"a", "b"}, [](auto a) { return hypot(a[0], a[1]); }),
+        math("log_sum_exp", {"a", "b"}, [](auto a) { return log_sum_exp(a[0], a[1]); }),
+        math("min", {"a", "b"}, [](auto a) { return fold_left(a, [](auto p, auto q) { return min(p, q); }); }, true),
+        math("max", {"a", "b"}, [](auto a) { return fold_left(a, [](auto p, auto q) { return max(p, q); }); }, true),
+        math("mod", {"a", "b"}, [](auto a) { return composite::mod(a[0], a[1]); }),
+        math("clamp", {"a", "lo", "hi"}, [](auto a) { return composite::clamp(a[0], a[1], a[2]); }),
+        math("mix", {"a", "b", "t"}, [](auto a) { return composite::mix(a[0], a[1], a[2]); }),
+        math("smoothstep", {"e0", "e1", "a"}, [](auto a) { return composite::smoothstep(a[0], a[1], a[2]); }),
         // Smooth CSG.
         {"smooth_union", {{"a", N}, {"b", N}, {"k", C}}, 3, false,
          [](A a) { return smooth_union(a.number(0), a.number(1), a.constant(2)); }},
@@ -173,11 +190,22 @@ const std::vector<Builtin>& table() {
     return builtins;
 }
 
-std::vector<const Builtin*> entries_named(std::string_view name) {
-    std::vector<const Builtin*> found;
-    for (const Builtin& b : table())
-        if (b.name == name) found.push_back(&b);
-    return found;
+/// The entries of a name (adjacent in the table), found by hash: calls and
+/// `let` ask for every name they read, 10⁵ times in a generated scene.
+std::span<const Builtin> entries_named(std::string_view name) {
+    static const auto* const index = [] {
+        auto* map = new std::unordered_map<std::string_view, std::span<const Builtin>>;
+        const std::vector<Builtin>& all = table();
+        for (std::size_t i = 0; i < all.size();) {
+            std::size_t end = i + 1;
+            while (end < all.size() && all[end].name == all[i].name) ++end;
+            map->emplace(all[i].name, std::span<const Builtin>(all).subspan(i, end - i));
+            i = end;
+        }
+        return map;
+    }();
+    const auto found = index->find(name);
+    return found == index->end() ? std::span<const Builtin>() : found->second;
 }
 
 bool is_vector_kind(Kind k) { return k == Kind::Vector || k == Kind::Point; }
@@ -208,7 +236,8 @@ std::vector<std::string_view> builtin_function_names() {
 }
 
 Value call_builtin_function(const TokenStream& in, const Token& name, std::span<const Argument> arguments) {
-    const std::vector<const Builtin*> overloads = entries_named(name.text);
+    std::vector<const Builtin*> overloads;
+    for (const Builtin& b : entries_named(name.text)) overloads.push_back(&b);
     const std::string fn(name.text);
     const bool numbers_only = std::ranges::all_of(overloads, [](const Builtin* b) { return b->numbers_only(); });
     std::string hint;
@@ -248,9 +277,8 @@ Value call_builtin_function(const TokenStream& in, const Token& name, std::span<
         if (!v.is_vector() && is_vector_kind(p.kind))
             fail(std::string(p.kind == Kind::Point ? "a point" : "a vector") + " (a, b, c), but it is a number");
         if (p.kind == Kind::Constant) {
-            const Expr& e = v.number();
-            if (!e.is_constant()) fail("a constant number, but it depends on " + variables_of(e));
-            if (!std::isfinite(e.value())) fail("finite, but it is " + format_number(e.value()));
+            if (!v.is_constant()) fail("a constant number, but it depends on " + variables_of(v.number()));
+            if (!std::isfinite(v.constant())) fail("finite, but it is " + format_number(v.constant()));
         }
         if (p.kind == Kind::Vector) {
             const ExprVector& e = v.vector();
@@ -263,10 +291,29 @@ Value call_builtin_function(const TokenStream& in, const Token& name, std::span<
         }
     }
     try {
+        if (entry.numbers) {
+            std::vector<Expr> numbers;
+            for (const Argument& a : arguments) numbers.push_back(a.value.number());
+            return entry.numbers(numbers);
+        }
         return entry.build(Arguments(arguments));
     } catch (const std::invalid_argument& e) {
         in.fail(name.where, fn + ": " + e.what() + hint);
     }
+}
+
+std::optional<double> fold_builtin_function(std::string_view name, std::span<const Argument> arguments) {
+    std::array<double, 8> constants{};  // more arguments (a long min or max) are built as an expression
+    if (arguments.size() > constants.size()) return std::nullopt;
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        if (!arguments[i].value.is_constant()) return std::nullopt;
+        constants[i] = arguments[i].value.constant();
+    }
+    const std::span<const double> values(constants.data(), arguments.size());
+    for (const Builtin& b : entries_named(name)) {
+        if (b.fold && b.accepts(values.size())) return b.fold(values);
+    }
+    return std::nullopt;
 }
 
 }  // namespace zeroset

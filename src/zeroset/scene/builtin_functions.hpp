@@ -10,6 +10,7 @@
 // table of their own (algebraic_surfaces.hpp).
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -36,5 +37,12 @@ std::vector<std::string_view> builtin_function_names();
 /// or parameter values that make no sense, at an argument for a wrong kind or
 /// a non-constant where a constant is needed.
 Value call_builtin_function(const TokenStream& in, const Token& name, std::span<const Argument> arguments);
+
+/// The function of numbers `name` at constant arguments, computed in doubles
+/// with the same steps as building the call and folding it to a constant;
+/// nullopt when an argument is not a constant number, or `name` is not a
+/// function of numbers alone, or does not take this many arguments (the
+/// caller then builds the call, which words any error).
+std::optional<double> fold_builtin_function(std::string_view name, std::span<const Argument> arguments);
 
 }  // namespace zeroset

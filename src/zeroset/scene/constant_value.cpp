@@ -1,5 +1,6 @@
 // Constant checks for settings. Expr folds every operation on constants, so a
-// value that depends on none of x, y, z is always a single Const node.
+// value that depends on none of x, y, z is always a single Const node (a
+// number Value keeps it as a double).
 #include "zeroset/scene/constant_value.hpp"
 
 #include <cmath>
@@ -11,11 +12,11 @@ namespace zeroset {
 double constant_number(const TokenStream& in, const Value& value, SourceLocation where, std::string_view what) {
     const std::string subject(what);
     if (value.is_vector()) in.fail(where, subject + " must be a number, but found a vector");
-    const Expr& e = value.number();
-    if (!e.is_constant())
-        in.fail(where, subject + " must be a constant number, but it depends on " + variables_of(e));
-    if (!std::isfinite(e.value())) in.fail(where, subject + " must be finite, but it is " + format_number(e.value()));
-    return e.value();
+    if (!value.is_constant())
+        in.fail(where, subject + " must be a constant number, but it depends on " + variables_of(value.number()));
+    const double c = value.constant();
+    if (!std::isfinite(c)) in.fail(where, subject + " must be finite, but it is " + format_number(c));
+    return c;
 }
 
 Vec3d constant_vector(const TokenStream& in, const Value& value, SourceLocation where, std::string_view what) {

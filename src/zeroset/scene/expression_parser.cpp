@@ -90,6 +90,7 @@ private:
         const Nesting nesting(*this, sign);
         Value operand = unary();
         if (sign.kind == TokenKind::Plus) return operand;
+        if (operand.is_constant()) return -operand.constant();
         if (!operand.is_vector()) return -operand.number();
         const ExprVector& v = operand.vector();
         return ExprVector{-v[0], -v[1], -v[2]};
@@ -106,7 +107,7 @@ private:
     Value primary() {
         const Token& token = in_.peek();
         switch (token.kind) {
-            case TokenKind::Number: in_.next(); return Expr(token.number);
+            case TokenKind::Number: in_.next(); return token.number;
             case TokenKind::Name:
                 in_.next();
                 return in_.at(TokenKind::LeftParen) ? call(token) : name(token);
@@ -118,7 +119,7 @@ private:
     Value name(const Token& token) {
         const std::string_view text = token.text;
         if (const auto value = builtin_value(text)) return *value;
-        if (text == clock_name) return Expr(context_.clock);
+        if (text == clock_name) return context_.clock;
         if (const Binding* binding = context_.scope.find(text)) return binding->value;
         if (is_builtin_function(text) || text == model_function || find_algebraic_surface(text))
             in_.fail(token.where, "'" + std::string(text) + "' is a function: call it as " + std::string(text) + "(...)");
@@ -170,6 +171,7 @@ private:
             } while (in_.accept(TokenKind::Comma));
             if (!in_.accept(TokenKind::RightParen)) in_.fail_expected("',' or ')'");
         }
+        if (const std::optional<double> folded = fold_builtin_function(name.text, args)) return *folded;
         return call_builtin_function(in_, name, args);
     }
 
@@ -229,9 +231,20 @@ private:
 
     /// a op b for the binary operators, on numbers and, where it means something, vectors.
     Value combine(const Token& op, const Value& a, const Value& b) {
+        if (a.is_constant() && b.is_constant()) {  // as Expr's constant folding takes it
+            const double p = a.constant();
+            const double q = b.constant();
+            switch (op.kind) {
+                case TokenKind::Plus: return apply_op<double>(Op::Add, p, q, 0);
+                case TokenKind::Minus: return apply_op<double>(Op::Sub, p, q, 0);
+                case TokenKind::Star: return apply_op<double>(Op::Mul, p, q, 0);
+                case TokenKind::Slash: return apply_op<double>(Op::Div, p, q, 0);
+                default: return pow_constant(p, q);  // '^'
+            }
+        }
         if (!a.is_vector() && !b.is_vector()) {
-            const Expr& p = a.number();
-            const Expr& q = b.number();
+            const Expr p = a.number();
+            const Expr q = b.number();
             switch (op.kind) {
                 case TokenKind::Plus: return p + q;
                 case TokenKind::Minus: return p - q;

@@ -3,7 +3,9 @@
 // instances, and loops over all of them.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/scene/constant_value.hpp"
@@ -299,13 +301,20 @@ SceneNodePtr SceneParser::instance(const Token& keyword) {
                                   (definition->parameters.size() == 1 ? "" : "s") + ", but " +
                                   std::to_string(arguments.size()) + (arguments.size() == 1 ? " was" : " were") +
                                   " given");
-    std::vector<const void*> key;
+    std::vector<std::uint64_t> key;
+    const auto add_expression = [&key](const Expr& e) {
+        key.push_back(1);
+        key.push_back(reinterpret_cast<std::uintptr_t>(e.id()));
+    };
     for (const Value& a : arguments) {
-        if (a.is_vector())
-            for (const Expr& e : a.vector()) key.push_back(e.id());
-        else
-            key.push_back(a.number().id());
-        key.push_back(nullptr);  // separates the arguments
+        if (a.is_vector()) {
+            for (const Expr& e : a.vector()) add_expression(e);
+        } else if (a.is_constant()) {
+            key.push_back(2);
+            key.push_back(std::bit_cast<std::uint64_t>(a.constant()));
+        } else {
+            add_expression(a.number());
+        }
     }
     ShapeDefinition::Reading& reading = definition->read[key];
     if (!reading.node) {
@@ -395,7 +404,7 @@ void SceneParser::loop(const Token& keyword, const std::function<void()>& body) 
         in_->next();  // '{'
         try {
             const Scope::Frame frame(scope_, scope_.mark());
-            scope_.define(std::string(name.text), {Expr(i), defined_at});
+            scope_.define(std::string(name.text), {i, defined_at});
             body();
         } catch (const SceneError& e) {
             throw with_note(e, "in the loop at " + format_location(in_->file_name(), keyword.where) + " with " +

@@ -301,22 +301,22 @@ NormalMode SceneParser::normal_mode() {
 void SceneParser::block(const Token& keyword, std::span<const std::string_view> keys,
                         const std::function<void(const Token& key)>& on_key,
                         std::span<const std::string_view> repeatable) {
-    const std::string block_name(keyword.text);
-    const std::string expected_keys = join_words(keys, "or");
+    const std::string_view block_name = keyword.text;
+    const auto expected_keys = [&] { return join_words(keys, "or"); };  // worded only for a message
     in_->expect(TokenKind::LeftBrace);
     std::map<std::string_view, SourceLocation> seen;
     while (!in_->accept(TokenKind::RightBrace)) {
         const Token& key = in_->peek();
         if (key.kind == TokenKind::End)
-            in_->fail(key.where, "expected '}' to close the " + block_name + " block opened at " +
+            in_->fail(key.where, "expected '}' to close the " + std::string(block_name) + " block opened at " +
                                      line_and_column(keyword.where) + ", but found end of file");
-        if (key.kind != TokenKind::Name) in_->fail_expected("a key (" + expected_keys + ") or '}'");
+        if (key.kind != TokenKind::Name) in_->fail_expected("a key (" + expected_keys() + ") or '}'");
         if (!contains(keys, key.text))
-            in_->fail(key.where, "unknown key '" + std::string(key.text) + "' in the " + block_name +
-                                     " block (expected " + expected_keys + ")" + did_you_mean(key.text, keys));
+            in_->fail(key.where, "unknown key '" + std::string(key.text) + "' in the " + std::string(block_name) +
+                                     " block (expected " + expected_keys() + ")" + did_you_mean(key.text, keys));
         if (!contains(repeatable, key.text)) {
             if (const auto first = seen.find(key.text); first != seen.end())
-                in_->fail(key.where, "'" + std::string(key.text) + "' is already set in this " + block_name +
+                in_->fail(key.where, "'" + std::string(key.text) + "' is already set in this " + std::string(block_name) +
                                          " block (at " + line_and_column(first->second) + ")");
             seen.emplace(key.text, key.where);
         }

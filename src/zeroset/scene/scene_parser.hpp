@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -47,13 +48,14 @@ struct ShapeDefinition {
     std::size_t body;     // … at its '{'
     std::size_t visible;  // the Scope mark where it is defined
     std::filesystem::path dir;  // the directory of its file (paths in it start there)
-    /// Each reading, by the ids of its arguments' expression nodes; the
-    /// arguments are kept with it, so that no id is ever reused.
+    /// Each reading, by its arguments: a constant by its bits, any other
+    /// number by the id of its expression node (the arguments are kept with
+    /// the reading, so that no id is ever reused).
     struct Reading {
         std::vector<Value> arguments;
         SceneNodePtr node;
     };
-    std::map<std::vector<const void*>, Reading> read;
+    std::map<std::vector<std::uint64_t>, Reading> read;
 };
 
 class SceneParser {

@@ -11,16 +11,6 @@ namespace zeroset {
 TokenStream::TokenStream(std::string file_name, std::string text)
     : file_name_(std::move(file_name)), text_(std::move(text)), tokens_(tokenize(text_, file_name_)) {}
 
-const Token& TokenStream::peek(std::size_t ahead) const {
-    return tokens_[std::min(pos_ + ahead, tokens_.size() - 1)];
-}
-
-const Token& TokenStream::next() {
-    const Token& token = peek();
-    if (pos_ + 1 < tokens_.size()) ++pos_;
-    return token;
-}
-
 bool TokenStream::accept(TokenKind kind) {
     if (!at(kind)) return false;
     next();

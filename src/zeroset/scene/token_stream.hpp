@@ -3,6 +3,7 @@
 // place that turns a location in this file into a SceneError.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -23,9 +24,15 @@ public:
     [[nodiscard]] const std::string& file_name() const { return file_name_; }
 
     /// The current token (`ahead` tokens further on); End once the text is used up.
-    [[nodiscard]] const Token& peek(std::size_t ahead = 0) const;
+    [[nodiscard]] const Token& peek(std::size_t ahead = 0) const {
+        return tokens_[std::min(pos_ + ahead, tokens_.size() - 1)];
+    }
     /// Consumes the current token and returns it.
-    const Token& next();
+    const Token& next() {
+        const Token& token = peek();
+        if (pos_ + 1 < tokens_.size()) ++pos_;
+        return token;
+    }
     [[nodiscard]] bool at(TokenKind kind) const { return peek().kind == kind; }
     /// Consumes the current token if it is of the given kind.
     bool accept(TokenKind kind);
