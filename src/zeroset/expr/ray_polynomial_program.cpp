@@ -172,6 +172,9 @@ private:
     RayPolynomialProgram::Refusal refusal_ = RayPolynomialProgram::Refusal::NotPolynomial;
 };
 
+// Every case below gives the same bits as the plain loops it stands for
+// (a sum of products started from 0, in increasing order of the first
+// operand's index); they only leave out padding, zero fills and branches.
 void RayPolynomialProgram::run(const Step& s, double* v, double* m) {
     const int da = s.a_degree;
     const int db = s.b_degree;
@@ -185,18 +188,19 @@ void RayPolynomialProgram::run(const Step& s, double* v, double* m) {
         case StepKind::Add:
         case StepKind::Sub: {
             const double sign = s.kind == StepKind::Add ? 1.0 : -1.0;
-            if (da == db) {  // no padding to do
-                for (int i = 0; i <= da; ++i) {
-                    vo[i] = va[i] + sign * vb[i];
-                    mo[i] = ma[i] + mb[i];
-                }
-                break;
+            const int common = std::min(da, db);
+            for (int i = 0; i <= common; ++i) {
+                vo[i] = va[i] + sign * vb[i];
+                mo[i] = ma[i] + mb[i];
             }
-            for (int i = 0; i <= s.out_degree; ++i) {
-                const double x = i <= da ? va[i] : 0.0;
-                const double y = i <= db ? vb[i] : 0.0;
-                vo[i] = x + sign * y;
-                mo[i] = (i <= da ? ma[i] : 0.0) + (i <= db ? mb[i] : 0.0);
+            // The longer operand's tail, added to the other's zero padding.
+            for (int i = common + 1; i <= da; ++i) {
+                vo[i] = va[i] + sign * 0.0;
+                mo[i] = ma[i] + 0.0;
+            }
+            for (int i = common + 1; i <= db; ++i) {
+                vo[i] = 0.0 + sign * vb[i];
+                mo[i] = 0.0 + mb[i];
             }
             break;
         }
@@ -216,13 +220,29 @@ void RayPolynomialProgram::run(const Step& s, double* v, double* m) {
                 mo[2] = ma[1] * mb[1];
                 break;
             }
-            std::fill(vo, vo + s.out_degree + 1, 0.0);
-            std::fill(mo, mo + s.out_degree + 1, 0.0);
-            for (int i = 0; i <= da; ++i) {
-                for (int j = 0; j <= db; ++j) {
-                    vo[i + j] += va[i] * vb[j];
-                    mo[i + j] += ma[i] * mb[j];
+            if (db == 0) {  // times a constant
+                for (int i = 0; i <= da; ++i) {
+                    vo[i] = 0.0 + va[i] * vb[0];
+                    mo[i] = 0.0 + ma[i] * mb[0];
                 }
+                break;
+            }
+            if (da == 0) {
+                for (int j = 0; j <= db; ++j) {
+                    vo[j] = 0.0 + va[0] * vb[j];
+                    mo[j] = 0.0 + ma[0] * mb[j];
+                }
+                break;
+            }
+            for (int k = 0; k <= s.out_degree; ++k) {  // each coefficient of the product as one sum
+                double value = 0.0;
+                double magnitude = 0.0;
+                for (int i = std::max(0, k - db); i <= std::min(k, da); ++i) {
+                    value += va[i] * vb[k - i];
+                    magnitude += ma[i] * mb[k - i];
+                }
+                vo[k] = value;
+                mo[k] = magnitude;
             }
             break;
         case StepKind::Scale: {

@@ -7,6 +7,8 @@
 #include <limits>
 #include <numbers>
 
+#include "zeroset/math/power_of_two.hpp"
+
 namespace zeroset {
 
 namespace {
@@ -140,8 +142,8 @@ int solve_any(const double* c, int n, double* roots) {
     double largest = 0.0;
     for (int i = 0; i <= n; ++i) largest = std::max(largest, std::fabs(c[i]));
     if (!(largest > 0.0) || !std::isfinite(largest)) return 0;
-    const int e = std::ilogb(largest);
-    for (int i = 0; i <= n; ++i) s[i] = std::ldexp(c[i], -e);
+    const int e = binary_exponent(largest);
+    for (int i = 0; i <= n; ++i) s[i] = times_power_of_two(c[i], -e);
 
     int m = n;
     for (; m > 0; --m) {

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "zeroset/math/box3.hpp"
+#include "zeroset/math/power_of_two.hpp"
 
 namespace zeroset {
 
@@ -78,19 +79,20 @@ struct Bounds {
         const Vec3d offset = ray.origin - center;
         const double k = std::max(radius, largest(offset)), m = largest(ray.dir);
         if (!(m > 0.0) || !(k > 0.0) || !std::isfinite(k) || !std::isfinite(m)) return std::nullopt;
-        const int ek = std::ilogb(k), em = std::ilogb(m);
+        const int ek = binary_exponent(k), em = binary_exponent(m);
         const auto scaled = [](const Vec3d& v, int e) {
-            return Vec3d{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+            return Vec3d{times_power_of_two(v.x, -e), times_power_of_two(v.y, -e), times_power_of_two(v.z, -e)};
         };
         const Vec3d oc = scaled(offset, ek), d = scaled(ray.dir, em);
-        const double r = std::ldexp(radius, -ek);
+        const double r = times_power_of_two(radius, -ek);
         const double a = dot(d, d), b = dot(oc, d), c = dot(oc, oc) - r * r;
         const double disc = b * b - a * c;
         if (disc < 0.0) return std::nullopt;
         const double s = std::sqrt(disc);
         // Numerically stable pair of roots, in t = t' · k / m.
         const double q = b >= 0.0 ? -(b + s) : -(b - s);
-        double t0 = std::ldexp(q / a, ek - em), t1 = std::ldexp(q != 0.0 ? c / q : q / a, ek - em);
+        double t0 = times_power_of_two(q / a, ek - em);
+        double t1 = times_power_of_two(q != 0.0 ? c / q : q / a, ek - em);
         if (std::isnan(t0) || std::isnan(t1)) return std::nullopt;  // 0 · ∞: a tangent ray with a tiny direction
         if (t0 > t1) std::swap(t0, t1);
         t0 = std::max(t0, t_min);
