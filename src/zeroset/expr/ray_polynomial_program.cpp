@@ -42,8 +42,7 @@ public:
         }
         for (const auto& [slot, value] : tape_.constants()) {
             slots_[slot] = allocate(0, 0);
-            p_.values_[slots_[slot].offset] = value;
-            p_.magnitudes_[slots_[slot].offset] = std::abs(value);
+            p_.pairs_[slots_[slot].offset] = RayPolynomialProgram::Pair{value, std::abs(value)};
         }
         for (const Clause& c : tape_.clauses()) {
             const auto out = clause(c);
@@ -68,9 +67,8 @@ private:
     };
 
     SlotState allocate(int degree, int roundings) {
-        const auto offset = static_cast<std::uint32_t>(p_.values_.size());
-        p_.values_.resize(p_.values_.size() + static_cast<std::size_t>(degree) + 1, 0.0);
-        p_.magnitudes_.resize(p_.values_.size(), 0.0);
+        const auto offset = static_cast<std::uint32_t>(p_.pairs_.size());
+        p_.pairs_.resize(p_.pairs_.size() + static_cast<std::size_t>(degree) + 1, RayPolynomialProgram::Pair{0.0, 0.0});
         return {offset, degree, roundings};
     }
 
@@ -81,7 +79,7 @@ private:
                                               static_cast<std::uint8_t>(b.degree), static_cast<std::uint8_t>(degree),
                                               a.offset, b.offset, out.offset};
         if (a.degree == 0 && b.degree == 0) {
-            RayPolynomialProgram::run(step, p_.values_.data(), p_.magnitudes_.data());
+            RayPolynomialProgram::run(step, p_.pairs_.data());
         } else {
             p_.steps_.push_back(step);
         }
@@ -109,8 +107,7 @@ private:
     SlotState folded(double value, const SlotState& a, const SlotState& b) {
         const bool exact = a.roundings == 0 && b.roundings == 0;
         SlotState out = allocate(0, exact ? libm_roundings : unknown_roundings);
-        p_.values_[out.offset] = value;
-        p_.magnitudes_[out.offset] = std::abs(value);
+        p_.pairs_[out.offset] = RayPolynomialProgram::Pair{value, std::abs(value)};
         return out;
     }
 
@@ -119,7 +116,7 @@ private:
         return std::nullopt;
     }
 
-    [[nodiscard]] double constant(const SlotState& s) const { return p_.values_[s.offset]; }
+    [[nodiscard]] double constant(const SlotState& s) const { return p_.pairs_[s.offset][0]; }
 
     std::optional<SlotState> clause(const Clause& c) {
         using Refusal = RayPolynomialProgram::Refusal;
@@ -174,84 +171,55 @@ private:
 
 // Every case below gives the same bits as the plain loops it stands for
 // (a sum of products started from 0, in increasing order of the first
-// operand's index); they only leave out padding, zero fills and branches.
-void RayPolynomialProgram::run(const Step& s, double* v, double* m) {
+// operand's index; a difference as a sum with the negated operand); they
+// only leave out padding, zero fills and branches.
+void RayPolynomialProgram::run(const Step& s, Pair* pairs) {
     const int da = s.a_degree;
     const int db = s.b_degree;
-    double* vo = v + s.out;
-    double* mo = m + s.out;
-    const double* va = v + s.a;
-    const double* ma = m + s.a;
-    const double* vb = v + s.b;
-    const double* mb = m + s.b;
+    Pair* out = pairs + s.out;
+    const Pair* a = pairs + s.a;
+    const Pair* b = pairs + s.b;
+    constexpr Pair zero{0.0, 0.0};
     switch (s.kind) {
         case StepKind::Add:
         case StepKind::Sub: {
-            const double sign = s.kind == StepKind::Add ? 1.0 : -1.0;
+            // F's coefficients add or subtract; M's always add.
+            const Pair sign{s.kind == StepKind::Add ? 1.0 : -1.0, 1.0};
             const int common = std::min(da, db);
-            for (int i = 0; i <= common; ++i) {
-                vo[i] = va[i] + sign * vb[i];
-                mo[i] = ma[i] + mb[i];
-            }
-            // The longer operand's tail, added to the other's zero padding.
-            for (int i = common + 1; i <= da; ++i) {
-                vo[i] = va[i] + sign * 0.0;
-                mo[i] = ma[i] + 0.0;
-            }
-            for (int i = common + 1; i <= db; ++i) {
-                vo[i] = 0.0 + sign * vb[i];
-                mo[i] = 0.0 + mb[i];
-            }
+            for (int i = 0; i <= common; ++i) out[i] = a[i] + sign * b[i];
+            for (int i = common + 1; i <= da; ++i) out[i] = a[i] + sign * zero;  // the other's zero padding
+            for (int i = common + 1; i <= db; ++i) out[i] = zero + sign * b[i];
             break;
         }
-        case StepKind::Neg:
-            for (int i = 0; i <= da; ++i) {
-                vo[i] = -va[i];
-                mo[i] = ma[i];
-            }
+        case StepKind::Neg: {
+            const Pair sign{-1.0, 1.0};
+            for (int i = 0; i <= da; ++i) out[i] = sign * a[i];
             break;
+        }
         case StepKind::Mul:
             if (da == 1 && db == 1) {  // the square or product of two coordinates: the commonest step, unrolled
-                vo[0] = va[0] * vb[0];
-                vo[1] = va[0] * vb[1] + va[1] * vb[0];
-                vo[2] = va[1] * vb[1];
-                mo[0] = ma[0] * mb[0];
-                mo[1] = ma[0] * mb[1] + ma[1] * mb[0];
-                mo[2] = ma[1] * mb[1];
+                out[0] = a[0] * b[0];
+                out[1] = a[0] * b[1] + a[1] * b[0];
+                out[2] = a[1] * b[1];
                 break;
             }
             if (db == 0) {  // times a constant
-                for (int i = 0; i <= da; ++i) {
-                    vo[i] = 0.0 + va[i] * vb[0];
-                    mo[i] = 0.0 + ma[i] * mb[0];
-                }
+                for (int i = 0; i <= da; ++i) out[i] = zero + a[i] * b[0];
                 break;
             }
             if (da == 0) {
-                for (int j = 0; j <= db; ++j) {
-                    vo[j] = 0.0 + va[0] * vb[j];
-                    mo[j] = 0.0 + ma[0] * mb[j];
-                }
+                for (int j = 0; j <= db; ++j) out[j] = zero + a[0] * b[j];
                 break;
             }
             for (int k = 0; k <= s.out_degree; ++k) {  // each coefficient of the product as one sum
-                double value = 0.0;
-                double magnitude = 0.0;
-                for (int i = std::max(0, k - db); i <= std::min(k, da); ++i) {
-                    value += va[i] * vb[k - i];
-                    magnitude += ma[i] * mb[k - i];
-                }
-                vo[k] = value;
-                mo[k] = magnitude;
+                Pair sum = zero;
+                for (int i = std::max(0, k - db); i <= std::min(k, da); ++i) sum += a[i] * b[k - i];
+                out[k] = sum;
             }
             break;
         case StepKind::Scale: {
-            const double d = vb[0];
-            const double magnitude = std::abs(d);
-            for (int i = 0; i <= da; ++i) {
-                vo[i] = va[i] / d;
-                mo[i] = ma[i] / magnitude;
-            }
+            const Pair divisor{b[0][0], std::abs(b[0][0])};
+            for (int i = 0; i <= da; ++i) out[i] = a[i] / divisor;
             break;
         }
     }
@@ -276,16 +244,19 @@ void RayPolynomialProgram::evaluate(const Ray& ray, double t_c) {
         const double residual = sum_error + product_error;
         const double centre = sum + residual;
         const std::uint32_t at = variable_offset_[k];
-        values_[at] = centre;
-        values_[at + 1] = d;
-        magnitudes_[at] = std::abs(centre) + std::abs(residual);
-        magnitudes_[at + 1] = std::abs(d);
+        pairs_[at] = Pair{centre, std::abs(centre) + std::abs(residual)};
+        pairs_[at + 1] = Pair{d, std::abs(d)};
     }
-    for (const Step& s : steps_) run(s, values_.data(), magnitudes_.data());
+    for (const Step& s : steps_) run(s, pairs_.data());
+    for (int i = 0; i <= degree_; ++i) {
+        const Pair& p = pairs_[result_offset_ + static_cast<std::size_t>(i)];
+        value_[static_cast<std::size_t>(i)] = p[0];
+        magnitude_[static_cast<std::size_t>(i)] = p[1];
+    }
 }
 
 double RayPolynomialProgram::radius(int i) const {
-    return radius_scale_ * magnitudes_[result_offset_ + static_cast<std::size_t>(i)];
+    return radius_scale_ * magnitude_[static_cast<std::size_t>(i)];
 }
 
 }  // namespace zeroset

@@ -30,6 +30,7 @@
 // is false and the method falls back to trusting the rounded coefficients.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -69,9 +70,9 @@ public:
     void evaluate(const Ray& ray, double t_c);
 
     /// G's rounded coefficients ĉ₀ … ĉ_degree(), ascending.
-    [[nodiscard]] std::span<const double> value() const { return result(values_); }
+    [[nodiscard]] std::span<const double> value() const { return result(value_); }
     /// The magnitude polynomial M, ascending.
-    [[nodiscard]] std::span<const double> magnitude() const { return result(magnitudes_); }
+    [[nodiscard]] std::span<const double> magnitude() const { return result(magnitude_); }
     /// r_i ≥ |c_i − ĉ_i| for G's exact coefficient c_i (+∞ when the bound is
     /// lost).
     [[nodiscard]] double radius(int i) const;
@@ -85,16 +86,23 @@ private:
         std::uint32_t a, b, out;  // offsets into the buffers (b: a Scale's divisor)
     };
 
+    /// A coefficient of F and the same coefficient of M side by side: every
+    /// step does the same arithmetic on both (up to signs), so one 128-bit
+    /// operation serves the two (GCC's and Clang's vector extension; SSE2 is
+    /// in every x86-64).
+    using Pair = double __attribute__((vector_size(16)));
+
     RayPolynomialProgram() = default;
-    /// Runs one step on the value and magnitude buffers.
-    static void run(const Step& s, double* v, double* m);
-    [[nodiscard]] std::span<const double> result(const std::vector<double>& buffer) const {
-        return {buffer.data() + result_offset_, static_cast<std::size_t>(degree_) + 1};
+    /// Runs one step on the coefficient pairs.
+    static void run(const Step& s, Pair* pairs);
+    [[nodiscard]] std::span<const double> result(const std::array<double, max_degree + 1>& buffer) const {
+        return {buffer.data(), static_cast<std::size_t>(degree_) + 1};
     }
 
     std::vector<Step> steps_;
-    std::vector<double> values_;      // every clause's coefficients; constants preloaded
-    std::vector<double> magnitudes_;  // the same for M
+    std::vector<Pair> pairs_;  // every clause's coefficients of F and M; constants preloaded
+    std::array<double, max_degree + 1> value_{};      // the result's F, after evaluate()
+    std::array<double, max_degree + 1> magnitude_{};  // and its M
     std::uint32_t variable_offset_[3] = {0, 0, 0};
     std::uint32_t result_offset_ = 0;
     int degree_ = 0;
