@@ -2,8 +2,11 @@
 #include "zeroset/expr/ray_polynomial_program.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include "zeroset/expr/op.hpp"
 
@@ -75,11 +78,16 @@ private:
     /// Emits a step — or, when every operand is a constant, runs it now.
     SlotState emit(Kind kind, const SlotState& a, const SlotState& b, int degree, int roundings) {
         const SlotState out = allocate(degree, roundings);
-        const RayPolynomialProgram::Step step{kind, static_cast<std::uint8_t>(a.degree),
-                                              static_cast<std::uint8_t>(b.degree), static_cast<std::uint8_t>(degree),
-                                              a.offset, b.offset, out.offset};
+        const RayPolynomialProgram::Step step{kind,
+                                              static_cast<std::uint8_t>(a.degree),
+                                              static_cast<std::uint8_t>(b.degree),
+                                              static_cast<std::uint8_t>(degree),
+                                              a.offset,
+                                              b.offset,
+                                              out.offset,
+                                              RayPolynomialProgram::kernel_for(kind, a.degree, b.degree)};
         if (a.degree == 0 && b.degree == 0) {
-            RayPolynomialProgram::run(step, p_.pairs_.data());
+            step.kernel(step, p_.pairs_.data());
         } else {
             p_.steps_.push_back(step);
         }
@@ -169,22 +177,29 @@ private:
     RayPolynomialProgram::Refusal refusal_ = RayPolynomialProgram::Refusal::NotPolynomial;
 };
 
-// Every case below gives the same bits as the plain loops it stands for
-// (a sum of products started from 0, in increasing order of the first
-// operand's index; a difference as a sum with the negated operand); they
-// only leave out padding, zero fills and branches.
-void RayPolynomialProgram::run(const Step& s, Pair* pairs) {
-    const int da = s.a_degree;
-    const int db = s.b_degree;
-    Pair* out = pairs + s.out;
-    const Pair* a = pairs + s.a;
-    const Pair* b = pairs + s.b;
+namespace {
+
+using Pair = RayPolynomialProgram::Pair;
+using Step = RayPolynomialProgram::Step;
+using StepKind = RayPolynomialProgram::StepKind;
+
+/// One step, written once for two uses: with plain ints for any degrees,
+/// and with std::integral_constant degrees and kind, where every loop has a
+/// known length and the compiler unrolls it. Every case gives the same bits
+/// as the plain loops it stands for (a sum of products started from 0, in
+/// increasing order of the first operand's index; a difference as a sum with
+/// the negated operand); they only leave out padding, zero fills and branches.
+template <class Kind, class DegreeA, class DegreeB>
+inline void run_step(Kind kind_, DegreeA da_, DegreeB db_, Pair* out, const Pair* a, const Pair* b) {
+    const StepKind kind = kind_;
+    const int da = da_;
+    const int db = db_;
     constexpr Pair zero{0.0, 0.0};
-    switch (s.kind) {
+    switch (kind) {
         case StepKind::Add:
         case StepKind::Sub: {
             // F's coefficients add or subtract; M's always add.
-            const Pair sign{s.kind == StepKind::Add ? 1.0 : -1.0, 1.0};
+            const Pair sign{kind == StepKind::Add ? 1.0 : -1.0, 1.0};
             const int common = std::min(da, db);
             for (int i = 0; i <= common; ++i) out[i] = a[i] + sign * b[i];
             for (int i = common + 1; i <= da; ++i) out[i] = a[i] + sign * zero;  // the other's zero padding
@@ -197,12 +212,6 @@ void RayPolynomialProgram::run(const Step& s, Pair* pairs) {
             break;
         }
         case StepKind::Mul:
-            if (da == 1 && db == 1) {  // the square or product of two coordinates: the commonest step, unrolled
-                out[0] = a[0] * b[0];
-                out[1] = a[0] * b[1] + a[1] * b[0];
-                out[2] = a[1] * b[1];
-                break;
-            }
             if (db == 0) {  // times a constant
                 for (int i = 0; i <= da; ++i) out[i] = zero + a[i] * b[0];
                 break;
@@ -211,7 +220,7 @@ void RayPolynomialProgram::run(const Step& s, Pair* pairs) {
                 for (int j = 0; j <= db; ++j) out[j] = zero + a[0] * b[j];
                 break;
             }
-            for (int k = 0; k <= s.out_degree; ++k) {  // each coefficient of the product as one sum
+            for (int k = 0; k <= da + db; ++k) {  // each coefficient of the product as one sum
                 Pair sum = zero;
                 for (int i = std::max(0, k - db); i <= std::min(k, da); ++i) sum += a[i] * b[k - i];
                 out[k] = sum;
@@ -223,6 +232,43 @@ void RayPolynomialProgram::run(const Step& s, Pair* pairs) {
             break;
         }
     }
+}
+
+void general_kernel(const Step& s, Pair* pairs) {
+    run_step(s.kind, int{s.a_degree}, int{s.b_degree}, pairs + s.out, pairs + s.a, pairs + s.b);
+}
+
+/// Degrees up to this get kernels of their own (quartics' steps all do).
+constexpr int fixed_degree_limit = 4;
+constexpr int fixed_degrees = fixed_degree_limit + 1;
+
+template <StepKind K, int A, int B>
+void fixed_kernel(const Step& s, Pair* pairs) {
+    run_step(std::integral_constant<StepKind, K>{}, std::integral_constant<int, A>{}, std::integral_constant<int, B>{},
+             pairs + s.out, pairs + s.a, pairs + s.b);
+}
+
+template <StepKind K, int... I>
+constexpr std::array<RayPolynomialProgram::Kernel, sizeof...(I)> fixed_kernels(std::integer_sequence<int, I...>) {
+    return {&fixed_kernel<K, I / fixed_degrees, I % fixed_degrees>...};
+}
+
+template <StepKind K>
+constexpr auto fixed_kernels_of_kind = fixed_kernels<K>(std::make_integer_sequence<int, fixed_degrees * fixed_degrees>{});
+
+}  // namespace
+
+RayPolynomialProgram::Kernel RayPolynomialProgram::kernel_for(StepKind kind, int a_degree, int b_degree) {
+    if (a_degree > fixed_degree_limit || b_degree > fixed_degree_limit) return &general_kernel;
+    const auto i = static_cast<std::size_t>(a_degree * fixed_degrees + b_degree);
+    switch (kind) {
+        case StepKind::Add: return fixed_kernels_of_kind<StepKind::Add>[i];
+        case StepKind::Sub: return fixed_kernels_of_kind<StepKind::Sub>[i];
+        case StepKind::Neg: return fixed_kernels_of_kind<StepKind::Neg>[i];
+        case StepKind::Mul: return fixed_kernels_of_kind<StepKind::Mul>[i];
+        case StepKind::Scale: return fixed_kernels_of_kind<StepKind::Scale>[i];
+    }
+    return &general_kernel;
 }
 
 RayPolynomialProgram::Compiled RayPolynomialProgram::compile(const Tape& tape) {
@@ -247,7 +293,7 @@ void RayPolynomialProgram::evaluate(const Ray& ray, double t_c) {
         pairs_[at] = Pair{centre, std::abs(centre) + std::abs(residual)};
         pairs_[at + 1] = Pair{d, std::abs(d)};
     }
-    for (const Step& s : steps_) run(s, pairs_.data());
+    for (const Step& s : steps_) s.kernel(s, pairs_.data());
     for (int i = 0; i <= degree_; ++i) {
         const Pair& p = pairs_[result_offset_ + static_cast<std::size_t>(i)];
         value_[static_cast<std::size_t>(i)] = p[0];

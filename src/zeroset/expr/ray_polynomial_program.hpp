@@ -77,14 +77,8 @@ public:
     /// lost).
     [[nodiscard]] double radius(int i) const;
 
-private:
+    // The compiled steps; public for the step kernels (ray_polynomial_program.cpp).
     enum class StepKind : std::uint8_t { Add, Sub, Neg, Mul, Scale };
-    /// One coefficient operation: out = a ∘ b over ranges of the buffers.
-    struct Step {
-        StepKind kind;
-        std::uint8_t a_degree, b_degree, out_degree;
-        std::uint32_t a, b, out;  // offsets into the buffers (b: a Scale's divisor)
-    };
 
     /// A coefficient of F and the same coefficient of M side by side: every
     /// step does the same arithmetic on both (up to signs), so one 128-bit
@@ -92,9 +86,23 @@ private:
     /// in every x86-64).
     using Pair = double __attribute__((vector_size(16)));
 
+    struct Step;
+    /// The code that runs a step: compiled for its kind and operand degrees
+    /// when both are small (loops of known length, unrolled), else general.
+    using Kernel = void (*)(const Step& s, Pair* pairs);
+
+    /// One coefficient operation: out = a ∘ b over ranges of the buffers.
+    struct Step {
+        StepKind kind;
+        std::uint8_t a_degree, b_degree, out_degree;
+        std::uint32_t a, b, out;  // offsets into the buffers (b: a Scale's divisor)
+        Kernel kernel;
+    };
+
+private:
     RayPolynomialProgram() = default;
-    /// Runs one step on the coefficient pairs.
-    static void run(const Step& s, Pair* pairs);
+    /// The kernel for a step of this kind and these degrees.
+    static Kernel kernel_for(StepKind kind, int a_degree, int b_degree);
     [[nodiscard]] std::span<const double> result(const std::array<double, max_degree + 1>& buffer) const {
         return {buffer.data(), static_cast<std::size_t>(degree_) + 1};
     }
