@@ -4,6 +4,7 @@
 #include "zeroset/trace/blob_segment.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -35,24 +36,29 @@ double mapped_magnitude(const Mat4& m, const Vec3d& v, bool point) {
     return largest;
 }
 
-/// a·b for a quadratic b (ascending powers) and a polynomial a of `na` coefficients.
-int multiply_by_quadratic(std::span<double> a, int na, const std::array<double, 3>& b) {
-    std::array<double, BlobSegmentSolver::max_degree + 1> product{};
-    for (int i = 0; i < na; ++i)
-        for (int j = 0; j < 3; ++j) product[static_cast<std::size_t>(i + j)] += a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)];
-    std::copy_n(product.begin(), na + 2, a.begin());
-    return na + 2;
-}
+/// The three polynomials a component contributes to a segment, in the lanes
+/// of one vector: its term K(u(τ)), the majorant with the inputs' errors, and
+/// the plain majorant. Each lane takes the steps the three would take one by
+/// one (GCC's and Clang's vector extension; lane 3 is unused).
+using Lanes = double __attribute__((vector_size(32)));
+using LanePolynomial = std::array<Lanes, BlobSegmentSolver::max_degree + 1>;
 
 /// K(u(τ)) for a kernel polynomial c in u and u(τ) a quadratic, by Horner's
-/// rule over polynomials; returns the count of coefficients written to out.
-int compose(std::span<const double> c, const std::array<double, 3>& u, bool magnitudes, std::span<double> out) {
-    std::fill(out.begin(), out.end(), 0.0);
-    out[0] = magnitudes ? std::abs(c.back()) : c.back();
+/// rule over polynomials — lane 0 with c, the others with |c|; returns the
+/// count of coefficients written to out.
+int compose(std::span<const double> c, const std::array<Lanes, 3>& u, LanePolynomial& out) {
+    // (Lanes are set in place: returning a 256-bit vector changes the ABI without AVX.)
+    const auto add_coefficient = [](Lanes& to, double k) { to += Lanes{k, std::abs(k), std::abs(k), 0.0}; };
+    out[0] = Lanes{};
+    add_coefficient(out[0], c.back());
     int n = 1;
     for (std::size_t i = c.size() - 1; i-- > 0;) {
-        n = multiply_by_quadratic(out, n, u);
-        out[0] += magnitudes ? std::abs(c[i]) : c[i];
+        LanePolynomial product{};  // out · u
+        for (int a = 0; a < n; ++a)
+            for (int j = 0; j < 3; ++j) product[static_cast<std::size_t>(a + j)] += out[static_cast<std::size_t>(a)] * u[static_cast<std::size_t>(j)];
+        n += 2;
+        std::copy_n(product.begin(), n, out.begin());
+        add_coefficient(out[0], c[i]);
     }
     return n;
 }
@@ -202,7 +208,7 @@ int BlobSegmentSolver::polynomial(std::span<const KernelOnRay> kernels, std::spa
     const int n = 2 * static_cast<int>(c.size() - 1) + 1;
     value.fill(0.0);
     Coefficients magnitude{}, perturbation{};
-    Coefficients term{}, bound{}, plain{};
+    LanePolynomial lanes{};
     for (const std::uint32_t i : active) {
         const KernelOnRay& k = kernels[i];
         const Vec3d q = k.q0 + t_c * k.qd;
@@ -212,15 +218,19 @@ int BlobSegmentSolver::polynomial(std::span<const KernelOnRay> kernels, std::spa
         const Vec3d d_mag{std::abs(k.qd.x), std::abs(k.qd.y), std::abs(k.qd.z)};
         const Vec3d q_up = q_mag + Vec3d{q_error, q_error, q_error};
         const Vec3d d_up = d_mag + Vec3d{k.qd_error, k.qd_error, k.qd_error};
-        compose(c, {dot(q, q), 2.0 * dot(q, k.qd), dot(k.qd, k.qd)}, false, term);
-        compose(c, {dot(q_up, q_up), 2.0 * dot(q_up, d_up), dot(d_up, d_up)}, true, bound);
-        compose(c, {dot(q_mag, q_mag), 2.0 * dot(q_mag, d_mag), dot(d_mag, d_mag)}, true, plain);
+        // u(τ) = |q + τ·qd|² for the term, the majorant with errors and the plain one.
+        const std::array<Lanes, 3> u{Lanes{dot(q, q), dot(q_up, q_up), dot(q_mag, q_mag), 0.0},
+                                     Lanes{2.0 * dot(q, k.qd), 2.0 * dot(q_up, d_up), 2.0 * dot(q_mag, d_mag), 0.0},
+                                     Lanes{dot(k.qd, k.qd), dot(d_up, d_up), dot(d_mag, d_mag), 0.0}};
+        compose(c, u, lanes);
         const double s = std::abs(k.strength);
         for (int j = 0; j < n; ++j) {
-            value[static_cast<std::size_t>(j)] -= k.strength * term[static_cast<std::size_t>(j)];
-            magnitude[static_cast<std::size_t>(j)] += s * bound[static_cast<std::size_t>(j)];
+            const Lanes& l = lanes[static_cast<std::size_t>(j)];
+            const double term = l[0], bound = l[1], plain = l[2];
+            value[static_cast<std::size_t>(j)] -= k.strength * term;
+            magnitude[static_cast<std::size_t>(j)] += s * bound;
             // The majorant's growth bounds what the inputs' errors do.
-            perturbation[static_cast<std::size_t>(j)] += s * (bound[static_cast<std::size_t>(j)] - plain[static_cast<std::size_t>(j)]);
+            perturbation[static_cast<std::size_t>(j)] += s * (bound - plain);
         }
     }
     value[0] += settings_.threshold;
