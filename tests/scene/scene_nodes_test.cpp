@@ -94,6 +94,23 @@ TEST(SceneNodes, ShapesWithParametersAreReadOncePerArgumentList) {
     EXPECT_NEAR(f(2.5, 0, 0), 0.0, 1e-12);
 }
 
+TEST(SceneNodes, AVectorArgumentIsNotThreeNumbers) {
+    // s((x, y, z), x, y, z) and s(x, y, z, (x, y, z)) pass the same four
+    // expressions in another grouping: each is a reading of its own, so the
+    // second (a vector times a vector) is an error, not the first's body.
+    const std::string shape = "shape s(a, b, c, d) { object { surface a*a + b*b + c*c - 1  bounds none } }\n";
+    const std::string alone = error_of(shape + "instance s((x, y, z), x, y, z)");
+    EXPECT_NE(alone.find("cannot apply '*' to two vectors"), std::string::npos) << alone;
+    const std::string after = error_of(shape + "instance s(x, y, z, (x, y, z))\ninstance s((x, y, z), x, y, z)");
+    EXPECT_NE(after.find("cannot apply '*' to two vectors"), std::string::npos) << after;
+    EXPECT_NE(after.find("placed at scene.zs:3:"), std::string::npos) << after;
+    // The same arguments again do share a reading.
+    const Scene twice = parse("shape t(a, b) { object { surface x*a + y*b  bounds none } }\n"
+                              "instance t(1, 2)\ninstance t(1, 2)\ninstance t(2, 1)");
+    EXPECT_EQ(twice.nodes[0]->children.at(0), twice.nodes[1]->children.at(0));
+    EXPECT_NE(twice.nodes[0]->children.at(0), twice.nodes[2]->children.at(0));
+}
+
 TEST(SceneNodes, LoopsRepeatTheirBody) {
     const Scene s = parse(
         "for i from 0 to 4 {\n"

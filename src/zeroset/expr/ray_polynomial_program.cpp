@@ -188,7 +188,9 @@ using StepKind = RayPolynomialProgram::StepKind;
 /// known length and the compiler unrolls it. Every case gives the same bits
 /// as the plain loops it stands for (a sum of products started from 0, in
 /// increasing order of the first operand's index; a difference as a sum with
-/// the negated operand); they only leave out padding, zero fills and branches.
+/// the negated operand; the product of two linear operands without the 0, as
+/// it always was — +0 + −0 would turn a −0 coefficient into +0); they only
+/// leave out padding, zero fills and branches.
 template <class Kind, class DegreeA, class DegreeB>
 inline void run_step(Kind kind_, DegreeA da_, DegreeB db_, Pair* out, const Pair* a, const Pair* b) {
     const StepKind kind = kind_;
@@ -212,6 +214,12 @@ inline void run_step(Kind kind_, DegreeA da_, DegreeB db_, Pair* out, const Pair
             break;
         }
         case StepKind::Mul:
+            if (da == 1 && db == 1) {  // the square or product of two coordinates: the commonest step
+                out[0] = a[0] * b[0];
+                out[1] = a[0] * b[1] + a[1] * b[0];
+                out[2] = a[1] * b[1];
+                break;
+            }
             if (db == 0) {  // times a constant
                 for (int i = 0; i <= da; ++i) out[i] = zero + a[i] * b[0];
                 break;

@@ -315,6 +315,7 @@ SceneNodePtr SceneParser::instance(const Token& keyword) {
         } else {
             add_expression(a.number());
         }
+        key.push_back(0);  // ends the argument: a vector and three numbers are told apart
     }
     ShapeDefinition::Reading& reading = definition->read[key];
     if (!reading.node) {
