@@ -81,7 +81,6 @@ private:
         const RayPolynomialProgram::Step step{kind,
                                               static_cast<std::uint8_t>(a.degree),
                                               static_cast<std::uint8_t>(b.degree),
-                                              static_cast<std::uint8_t>(degree),
                                               a.offset,
                                               b.offset,
                                               out.offset,
@@ -264,19 +263,16 @@ constexpr std::array<RayPolynomialProgram::Kernel, sizeof...(I)> fixed_kernels(s
 template <StepKind K>
 constexpr auto fixed_kernels_of_kind = fixed_kernels<K>(std::make_integer_sequence<int, fixed_degrees * fixed_degrees>{});
 
+/// The fixed kernels by kind (in StepKind's order), then by degrees.
+constexpr std::array fixed_kernel_table{fixed_kernels_of_kind<StepKind::Add>, fixed_kernels_of_kind<StepKind::Sub>,
+                                        fixed_kernels_of_kind<StepKind::Neg>, fixed_kernels_of_kind<StepKind::Mul>,
+                                        fixed_kernels_of_kind<StepKind::Scale>};
+
 }  // namespace
 
 RayPolynomialProgram::Kernel RayPolynomialProgram::kernel_for(StepKind kind, int a_degree, int b_degree) {
     if (a_degree > fixed_degree_limit || b_degree > fixed_degree_limit) return &general_kernel;
-    const auto i = static_cast<std::size_t>(a_degree * fixed_degrees + b_degree);
-    switch (kind) {
-        case StepKind::Add: return fixed_kernels_of_kind<StepKind::Add>[i];
-        case StepKind::Sub: return fixed_kernels_of_kind<StepKind::Sub>[i];
-        case StepKind::Neg: return fixed_kernels_of_kind<StepKind::Neg>[i];
-        case StepKind::Mul: return fixed_kernels_of_kind<StepKind::Mul>[i];
-        case StepKind::Scale: return fixed_kernels_of_kind<StepKind::Scale>[i];
-    }
-    return &general_kernel;
+    return fixed_kernel_table[static_cast<std::size_t>(kind)][static_cast<std::size_t>(a_degree * fixed_degrees + b_degree)];
 }
 
 RayPolynomialProgram::Compiled RayPolynomialProgram::compile(const Tape& tape) {

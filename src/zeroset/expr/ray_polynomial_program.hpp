@@ -94,7 +94,7 @@ public:
     /// One coefficient operation: out = a ∘ b over ranges of the buffers.
     struct Step {
         StepKind kind;
-        std::uint8_t a_degree, b_degree, out_degree;
+        std::uint8_t a_degree, b_degree;
         std::uint32_t a, b, out;  // offsets into the buffers (b: a Scale's divisor)
         Kernel kernel;
     };

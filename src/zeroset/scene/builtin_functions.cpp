@@ -38,7 +38,6 @@ class Arguments {
 public:
     explicit Arguments(std::span<const Argument> given) : given_(given) {}
 
-    [[nodiscard]] std::size_t count() const { return given_.size(); }
     [[nodiscard]] bool has(std::size_t i) const { return i < given_.size(); }
     [[nodiscard]] Expr number(std::size_t i) const { return given_[i].value.number(); }
     [[nodiscard]] double constant(std::size_t i) const { return given_[i].value.constant(); }
