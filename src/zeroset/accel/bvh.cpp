@@ -56,8 +56,10 @@ Split best_split(std::span<const Item> items, const Box3& centroids) {
         std::array<std::size_t, bin_count> bin_items{};
         bin_box.fill(empty_box());
         const auto bin_of = [&](const Item& item) {
-            const int b = static_cast<int>(bin_count * ((item.centroid[axis] - lo) / extent));
-            return std::clamp(b, 0, bin_count - 1);
+            // Clamped as a double: an infinite box's centroid makes the fraction
+            // ±∞ or NaN, which no int holds (NaN goes to bin 0).
+            const double f = bin_count * ((item.centroid[axis] - lo) / extent);
+            return f > 0.0 ? static_cast<int>(std::min(f, static_cast<double>(bin_count - 1))) : 0;
         };
         for (const Item& item : items) {
             const int b = bin_of(item);
