@@ -114,7 +114,7 @@ TEST(PovDirectives, ErrorsAreLocated) {
     EXPECT_EQ(error_of("sphere { 0, 1 glow 1 }"), "scene.pov:1:15: unknown object modifier 'glow' in sphere");
     // Nesting is bounded: the parser recurses.
     EXPECT_EQ(error_of("#declare A = " + std::string(300, '(') + "1" + std::string(300, ')') + ";"),
-              "scene.pov:1:214: expressions or objects nested more than 200 deep");
+              "scene.pov:1:213: expressions, objects or directives nested more than 200 deep");
     std::string unions;
     for (int i = 0; i < 300; ++i) unions += "union { ";
     EXPECT_NE(error_of(unions).find("nested more than 200 deep"), std::string::npos);
@@ -122,6 +122,10 @@ TEST(PovDirectives, ErrorsAreLocated) {
     std::string calls = "#macro B(P) sphere { P, 1 } #end\nobject { ";
     for (int i = 0; i < 3000; ++i) calls += "B(";
     EXPECT_EQ(error_of(calls), "scene.pov:2:408: macro calls nested in their arguments more than 200 deep");
+    // A #declare whose value begins with another #declare (found by the fuzzer: a stack overflow).
+    std::string declares;
+    for (int i = 0; i < 3000; ++i) declares += "#declare a ";
+    EXPECT_NE(error_of(declares).find("nested more than 200 deep"), std::string::npos);
 }
 
 TEST(PovDirectives, UnusedDeclarationsSayNothingUsedOnesWarn) {

@@ -244,7 +244,7 @@ private:
     /// The scene's top-level objects get POV-Ray's default texture where they give none.
     void add_top_level(const std::shared_ptr<const PovObject>& object);
 
-    /// Counts one level of nested expressions or objects while it lives;
+    /// Counts one level of nested expressions, objects or directives while it lives;
     /// past max_nesting the scene is refused (the parser recurses).
     class Nesting {
     public:

@@ -27,7 +27,8 @@ bool opens_block(const PovToken& t) {
 PovParser::Nesting::Nesting(PovParser& parser) : parser_(parser) {
     if (++parser_.nesting_ > max_nesting) {
         --parser_.nesting_;
-        parser_.fail(parser_.peek(), "expressions or objects nested more than 200 deep");
+        // Raw: peek() could run a directive, which nests again.
+        parser_.fail(parser_.peek_raw(0), "expressions, objects or directives nested more than 200 deep");
     }
 }
 
@@ -211,6 +212,7 @@ PovToken PovParser::skip_to(std::initializer_list<std::string_view> stop_at) {
 }
 
 void PovParser::directive(const PovToken& keyword) {
+    const Nesting nesting(*this);  // a directive met while a #declare looks ahead runs inside it
     const std::string& d = keyword.text;
     if (d == "declare" || d == "local") {
         declare(keyword, d == "local");
