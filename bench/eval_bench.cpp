@@ -1,27 +1,34 @@
 // Evaluator throughput on a real model (bear.vm), in clause·points per second,
 // next to a straight-line SIMD multiply-add loop over the same number of values
-// in the same binary — the machine's own ceiling for this kind of work.
+// in the same binary — the machine's own ceiling for this kind of work; and
+// the tape pruner's two steps on prospero.vm, as slicing uses them.
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <cmath>
 #include <fstream>
 #include <random>
+#include <string>
 #include <type_traits>
 #include <vector>
 
 #include "fma_ceiling.hpp"
 #include "zeroset/expr/batch_evaluator.hpp"
 #include "zeroset/expr/evaluator.hpp"
+#include "zeroset/expr/tape_pruner.hpp"
 #include "zeroset/expr/vm_import.hpp"
 
 namespace {
 
 using zeroset::Tape;
 
+Tape model_tape(const char* name) {
+    std::ifstream in(std::string(ZEROSET_MODELS_DIR) + "/" + name);
+    return Tape(zeroset::import_vm(in));
+}
+
 const Tape& bear_tape() {
-    static const Tape tape = [] {
-        std::ifstream in(ZEROSET_MODELS_DIR "/bear.vm");
-        return Tape(zeroset::import_vm(in));
-    }();
+    static const Tape tape = model_tape("bear.vm");
     return tape;
 }
 
@@ -96,6 +103,64 @@ void BM_BoxEvaluator_Bear(benchmark::State& state) {
     set_rate(state, tape.clauses().size(), n);
 }
 BENCHMARK(BM_BoxEvaluator_Bear<zeroset::Interval>)->Arg(256);
+
+/// The four quarters of a square tile of side 2^-range(0) of prospero's ±1
+/// square, at a place its outline crosses, and the tape to evaluate them
+/// with: the full one for the root (range 0), else the one pruned to the tile.
+struct ProsperoTile {
+    Tape tape;
+    std::array<zeroset::Box3, zeroset::TapePruner::lanes> quarters;
+
+    explicit ProsperoTile(int level) {
+        static const Tape full = model_tape("prospero.vm");
+        const double side = std::ldexp(2.0, -level), x0 = -0.11, y0 = 0.23;  // on the outline
+        const zeroset::Box3 tile{{x0, y0, 0.0}, {x0 + side, y0 + side, 0.0}};
+        zeroset::TapePruner pruner(full);
+        if (level == 0) tape = full;
+        else pruner.prune(full, tile, tape);
+        for (int k = 0; k < 4; ++k) {
+            const double qx = x0 + (k % 2) * side / 2, qy = y0 + (k / 2) * side / 2;
+            quarters[static_cast<std::size_t>(k)] = {{qx, qy, 0.0}, {qx + side / 2, qy + side / 2, 0.0}};
+        }
+    }
+};
+
+/// The pruner's interval walk over the four quarters: four one-box walks,
+/// or one walk of four lanes (range(1) = 1).
+void BM_PrunerEvaluate_Prospero(benchmark::State& state) {
+    const ProsperoTile tile(static_cast<int>(state.range(0)));
+    zeroset::TapePruner pruner(tile.tape);
+    for (auto _ : state) {
+        if (state.range(1) == 1) {
+            benchmark::DoNotOptimize(pruner.evaluate(tile.tape, tile.quarters));
+        } else {
+            for (const zeroset::Box3& box : tile.quarters) benchmark::DoNotOptimize(pruner.evaluate(tile.tape, box));
+        }
+    }
+    state.counters["clauses"] = static_cast<double>(tile.tape.clauses().size());
+    state.counters["tile_clauses/s"] = benchmark::Counter(static_cast<double>(4 * tile.tape.clauses().size()),
+                                                          benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_PrunerEvaluate_Prospero)->ArgsProduct({{0, 3, 6}, {0, 1}});
+
+/// The pruned tapes of the four quarters, after one walk of four lanes.
+void BM_PrunerSimplify_Prospero(benchmark::State& state) {
+    const ProsperoTile tile(static_cast<int>(state.range(0)));
+    zeroset::TapePruner pruner(tile.tape);
+    (void)pruner.evaluate(tile.tape, tile.quarters);
+    std::array<Tape, 4> pruned;
+    std::size_t kept = 0;
+    for (auto _ : state) {
+        kept = 0;
+        for (int k = 0; k < 4; ++k) kept += pruner.simplified(pruned[static_cast<std::size_t>(k)], k).clauses().size();
+        benchmark::DoNotOptimize(pruned.data());
+    }
+    state.counters["clauses"] = static_cast<double>(tile.tape.clauses().size());
+    state.counters["kept"] = static_cast<double>(kept) / 4.0;
+    state.counters["source_clauses/s"] = benchmark::Counter(static_cast<double>(4 * tile.tape.clauses().size()),
+                                                            benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_PrunerSimplify_Prospero)->DenseRange(0, 6, 3);
 BENCHMARK(BM_BoxEvaluator_Bear<zeroset::Dual<zeroset::Interval>>)->Arg(256);
 
 /// The ceiling (bench/fma_ceiling.hpp): for each clause of the tape, one

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 #include "support/models.hpp"
 
+#include <array>
+#include <bit>
 #include <fstream>
 #include <random>
+#include <string>
 
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/tape_pruner.hpp"
@@ -151,6 +154,66 @@ TEST(TapePruner, ProsperoShrinksByOrdersOfMagnitudeInSmallBoxes) {
     }
     EXPECT_LT(most_clauses, full.clauses().size() / 10);
     EXPECT_LT(most_slots, full.slot_count() / 10);
+}
+
+/// Two tapes are the same: clauses, value ids, constants, slots.
+void expect_same_tape(const Tape& a, const Tape& b) {
+    ASSERT_EQ(a.clauses().size(), b.clauses().size());
+    for (std::size_t i = 0; i < a.clauses().size(); ++i) {
+        const Clause &p = a.clauses()[i], &q = b.clauses()[i];
+        ASSERT_TRUE(p.op == q.op && p.out == q.out && p.a == q.a && p.b == q.b) << "clause " << i;
+        ASSERT_EQ(a.operand_values()[i].a, b.operand_values()[i].a);
+        ASSERT_EQ(a.operand_values()[i].b, b.operand_values()[i].b);
+    }
+    EXPECT_EQ(a.constants(), b.constants());
+    EXPECT_EQ(a.slot_count(), b.slot_count());
+    EXPECT_EQ(a.result_slot(), b.result_slot());
+    EXPECT_EQ(a.result_value(), b.result_value());
+}
+
+/// The four-lane evaluate() against four one-box ones over random boxes:
+/// the same bounds, bit for bit, and the same pruned tapes.
+void expect_lanes_like_single_boxes(const Tape& full, double reach, double largest_side, int rounds) {
+    TapePruner lanes(full), single(full);
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> place(-reach, reach), side(0.0, largest_side);
+    for (int round = 0; round < rounds; ++round) {
+        std::array<Box3, TapePruner::lanes> boxes;
+        for (Box3& box : boxes) {
+            const Vec3d lo{place(random), place(random), place(random)};
+            box = {lo, lo + Vec3d{side(random), side(random), side(random)}};
+        }
+        const IntervalLanes f = lanes.evaluate(full, boxes);
+        for (int k = 0; k < TapePruner::lanes; ++k) {
+            const Interval expected = single.evaluate(full, boxes[static_cast<std::size_t>(k)]);
+            const Interval got = f.lane(k);
+            ASSERT_TRUE((got.is_empty() && expected.is_empty()) ||
+                        (std::bit_cast<std::uint64_t>(got.lo) == std::bit_cast<std::uint64_t>(expected.lo) &&
+                         std::bit_cast<std::uint64_t>(got.hi) == std::bit_cast<std::uint64_t>(expected.hi)))
+                << "round " << round << " lane " << k << ": [" << got.lo << ", " << got.hi << "] against ["
+                << expected.lo << ", " << expected.hi << "]";
+            Tape from_lanes, from_single;
+            const Tape& a = lanes.simplified(from_lanes, k);
+            const Tape& b = single.simplified(from_single);
+            expect_same_tape(a, b);
+        }
+    }
+}
+
+TEST(TapePruner, FourLanesEvaluateAndPruneAsFourSingleBoxes) {
+    // Every op, and min/max whose sides win in some boxes and not in others.
+    const Expr x = var_x(), y = var_y(), z = var_z();
+    const Expr shape = min(max(ball(-1, 1), -z + 0.25 * sin(3.0 * x)), ball(1.5, 0.75) * exp(-square(y)) / (1.0 + abs(x))) +
+                       min(sqrt(square(x) + square(y)), max(hypot(x, z) - 2.0, powi(y, 3) - atan(z)));
+    expect_lanes_like_single_boxes(Tape(shape), 3.0, 2.0, 500);
+}
+
+TEST(TapePruner, FourLanesMatchSingleBoxesOnTheModels) {
+    ZEROSET_SKIP_WITHOUT_MODEL("prospero.vm");
+    for (const char* name : {"prospero.vm", "bear.vm"}) {
+        std::ifstream in(std::string(ZEROSET_MODELS_DIR) + "/" + name);
+        expect_lanes_like_single_boxes(Tape(import_vm(in)), 1.0, 0.3, 40);
+    }
 }
 
 }  // namespace

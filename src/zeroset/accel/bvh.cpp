@@ -262,6 +262,14 @@ struct TwoPairs {
     }
 };
 
+/// The slab test of a build without run-time dispatch: four lanes when the
+/// build's own target has AVX2 (-march=native, ZEROSET_NATIVE), else two pairs.
+#if defined(__AVX2__)
+using BuildSlabTest = FourLanes;
+#else
+using BuildSlabTest = TwoPairs;
+#endif
+
 }  // namespace
 
 template <class Test>
@@ -345,7 +353,7 @@ template <class Test>
     visit(context, frontier, std::numeric_limits<double>::infinity());
 }
 
-#if defined(__GNUC__) && defined(__x86_64__)
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"))) void Bvh::traverse_in_order_avx2(const Ray& ray, double t_min,
                                                                             double t_max, Queue& queue,
                                                                             Visitor visit, void* context) const {
@@ -361,11 +369,11 @@ void Bvh::traverse_in_order(const Ray& ray, double t_min, double t_max, Queue& q
 #else
 void Bvh::traverse_in_order(const Ray& ray, double t_min, double t_max, Queue& queue, Visitor visit,
                             void* context) const {
-    walk_in_order<TwoPairs>(ray, t_min, t_max, queue, visit, context);
+    walk_in_order<BuildSlabTest>(ray, t_min, t_max, queue, visit, context);
 }
 #endif
 
-#if defined(__GNUC__) && defined(__x86_64__)
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__)
 // The traversal compiled for AVX2 (x86-64-v3) as well, chosen by the CPU
 // when it first runs: its four-lane slab test is about 1.3 times faster than
 // two pairs on the sphere field of bench/bvh_bench.cpp, and the walk as a
@@ -382,7 +390,7 @@ void Bvh::traverse(const Ray& ray, double t_min, double t_max, Visitor visit, vo
 }
 #else
 void Bvh::traverse(const Ray& ray, double t_min, double t_max, Visitor visit, void* context) const {
-    walk<TwoPairs>(ray, t_min, t_max, visit, context);
+    walk<BuildSlabTest>(ray, t_min, t_max, visit, context);
 }
 #endif
 

@@ -5,6 +5,7 @@
 #include "zeroset/expr/tape_pruner.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace zeroset {
 
@@ -18,43 +19,97 @@ TapePruner::TapePruner(const Tape& full)
       emitted_at_(full.clauses().size()),
       constant_index_(full.slot_count()) {}
 
+namespace {
+
+// The bounds of lane k of a number of either type.
+double lower(const Interval& v, int) { return v.lo; }
+double upper(const Interval& v, int) { return v.hi; }
+double lower(const IntervalLanes& v, int k) { return v.lo[static_cast<std::size_t>(k)]; }
+double upper(const IntervalLanes& v, int k) { return v.hi[static_cast<std::size_t>(k)]; }
+
+template <class T>
+constexpr int lane_count = 1;
+template <>
+constexpr int lane_count<IntervalLanes> = IntervalLanes::count;
+
+}  // namespace
+
 // Flattened: the op dispatch and the interval arithmetic are inlined into
 // this loop, which is most of the cost of slicing a large model.
-[[gnu::flatten]] Interval TapePruner::evaluate(const Tape& source, const Box3& box) {
+template <class T>
+[[gnu::flatten]] T TapePruner::walk(const Tape& source, T* s) {
+    constexpr int n = lane_count<T>;
     source_ = &source;
-    choices_made_ = 0;
-    Interval* s = slots_.data();
-    s[Tape::slot_x] = {box.lo.x, box.hi.x};
-    s[Tape::slot_y] = {box.lo.y, box.hi.y};
-    s[Tape::slot_z] = {box.lo.z, box.hi.z};
-    for (const auto& [slot, value] : source.constants()) s[slot] = Interval(value);
+    choices_made_.fill(0);
+    for (const auto& [slot, value] : source.constants()) s[slot] = T(value);
     const std::vector<Clause>& clauses = source.clauses();
     for (std::size_t i = 0; i < clauses.size(); ++i) {
         const Clause& c = clauses[i];
-        const Interval a = s[c.a];
-        const Interval b = s[op_arity(c.op) == 2 ? c.b : c.a];
-        Choice choice = Choice::Both;
+        const T& a = s[c.a];
+        const T& b = s[op_arity(c.op) == 2 ? c.b : c.a];
+        std::array<Choice, lanes>& choices = choices_[i];
+        choices = {};
         if (c.op == Op::Min || c.op == Op::Max) {
-            const bool a_below = a.hi <= b.lo, b_below = b.hi <= a.lo;  // false for empty intervals
-            if (c.op == Op::Min ? a_below : b_below) choice = Choice::Left;
-            else if (c.op == Op::Min ? b_below : a_below) choice = Choice::Right;
-            if (choice != Choice::Both) {
+            for (int k = 0; k < n; ++k) {
+                // Both false for an empty interval.
+                const bool a_below = upper(a, k) <= lower(b, k), b_below = upper(b, k) <= lower(a, k);
+                Choice choice = Choice::Both;
+                if (c.op == Op::Min ? a_below : b_below) choice = Choice::Left;
+                else if (c.op == Op::Min ? b_below : a_below) choice = Choice::Right;
+                if (choice == Choice::Both) continue;
                 const ClauseOperands& v = source.operand_values()[i];
-                equals_[i] = resolve(choice == Choice::Left ? v.a : v.b);
-                ++choices_made_;
+                equals_[i][k] = resolve(choice == Choice::Left ? v.a : v.b, k);
+                choices[k] = choice;
+                ++choices_made_[k];
             }
         }
-        choices_[i] = choice;
-        s[c.out] = apply_op<Interval>(c.op, a, b, static_cast<int>(c.b));
+        s[c.out] = apply_op<T>(c.op, a, b, static_cast<int>(c.b));
     }
     return s[source.result_slot()];
 }
 
+Interval TapePruner::evaluate(const Tape& source, const Box3& box) {
+    Interval* s = slots_.data();
+    s[Tape::slot_x] = {box.lo.x, box.hi.x};
+    s[Tape::slot_y] = {box.lo.y, box.hi.y};
+    s[Tape::slot_z] = {box.lo.z, box.hi.z};
+    return walk(source, s);
+}
+
+IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lanes> boxes) {
+    if (lane_slots_.empty()) lane_slots_.resize(slots_.size());
+    IntervalLanes* s = lane_slots_.data();
+    for (int k = 0; k < lanes; ++k) {
+        const Box3& box = boxes[static_cast<std::size_t>(k)];
+        s[Tape::slot_x].set_lane(k, {box.lo.x, box.hi.x});
+        s[Tape::slot_y].set_lane(k, {box.lo.y, box.hi.y});
+        s[Tape::slot_z].set_lane(k, {box.lo.z, box.hi.z});
+    }
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__)
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    if (avx2) return walk_avx2(source, s);
+#endif
+    return walk(source, s);
+}
+
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__)
+// The lanes walk compiled for AVX2 as well, chosen by the CPU when it first
+// runs: a vector of four doubles is one register there, two on plain x86-64.
+// AVX2 without FMA, so that no product and sum fuse: every lane keeps the
+// scalar code's bits.
+[[gnu::target("avx2"), gnu::flatten]] IntervalLanes TapePruner::walk_avx2(const Tape& source, IntervalLanes* s) {
+    return walk(source, s);
+}
+#endif
+
 namespace {
-// How take_slot() marks a slot until the pruned tape's layout is known
-// (x, y and z keep slots 0, 1, 2 and are not marked).
-constexpr std::uint32_t working_mark = std::uint32_t{1} << 30;
-constexpr std::uint32_t constant_mark = std::uint32_t{1} << 29;
+// How take_slot() marks a slot until the pruned tape's layout is known, in
+// its top two bits: x, y and z (slots 0, 1, 2) unmarked, then constants and
+// working slots, each numbered from 0 in its group.
+constexpr int mark_shift = 30;
+constexpr std::uint32_t constant_mark = std::uint32_t{1} << mark_shift;
+constexpr std::uint32_t working_mark = std::uint32_t{2} << mark_shift;
+constexpr std::uint32_t number_bits = constant_mark - 1;
 }  // namespace
 
 inline std::uint32_t TapePruner::take_slot(ValueId v) {
@@ -62,12 +117,7 @@ inline std::uint32_t TapePruner::take_slot(ValueId v) {
         const std::uint32_t j = v & ~clause_value;
         if (clause_live_[j] != epoch_) {
             clause_live_[j] = epoch_;
-            if (free_slots_.empty()) {
-                working_slot_[j] = working_slots_++;
-            } else {
-                working_slot_[j] = free_slots_.back();
-                free_slots_.pop_back();
-            }
+            working_slot_[j] = free_count_ > 0 ? free_slots_[--free_count_] : working_slots_++;
         }
         return working_mark | working_slot_[j];
     }
@@ -79,63 +129,65 @@ inline std::uint32_t TapePruner::take_slot(ValueId v) {
     return constant_mark | constant_index_[v];
 }
 
-// Constants take the slots after x, y, z (loaded once, never written), then
-// the working slots.
-std::uint32_t TapePruner::final_slot(std::uint32_t encoded) const {
-    if (encoded & working_mark) return 3 + constants_ + (encoded & ~working_mark);
-    if (encoded & constant_mark) return 3 + (encoded & ~constant_mark);
-    return encoded;
-}
-
-ValueId TapePruner::final_value(ValueId v) const {
-    if (v & clause_value) return clause_value | (emitted_ - 1 - emitted_at_[v & ~clause_value]);
-    return v < 3 ? v : 3 + constant_index_[v];
-}
-
 // One backward pass does liveness, slot allocation and emission: walking
 // backwards, the first use of a value met is its last use, where it takes a
 // slot; its definition frees the slot. The clauses come out reversed and with
 // marked slots; a pass over the live clauses alone puts them in order with
-// their final slots.
-void TapePruner::simplify(Tape& out) {
+// their final slots: constants after x, y, z (loaded once, never written),
+// then the working slots.
+[[gnu::flatten]] void TapePruner::simplify(Tape& out, int lane) {
     const Tape& source = *source_;
     if (++epoch_ == 0) {  // stamps wrapped: clear them once every 2^32 prunes
         std::fill(clause_live_.begin(), clause_live_.end(), 0);
         std::fill(constant_live_.begin(), constant_live_.end(), 0);
         epoch_ = 1;
     }
-    free_slots_.clear();
+    free_count_ = 0;
     working_slots_ = constants_ = 0;
-    reversed_.clear();
-    reversed_operands_.clear();
-
-    const ValueId root = resolve(source.result_value());
-    const std::uint32_t root_slot = take_slot(root);
     const std::vector<Clause>& clauses = source.clauses();
+    const std::vector<ClauseOperands>& operands = source.operand_values();
+    // At most every clause is kept, and each frees one slot.
+    if (reversed_.size() < clauses.size()) {
+        reversed_.resize(clauses.size());
+        reversed_operands_.resize(clauses.size());
+        free_slots_.resize(clauses.size());
+    }
+
+    const ValueId root = resolve(source.result_value(), lane);
+    const std::uint32_t root_slot = take_slot(root);
+    std::uint32_t kept = 0;
     for (std::size_t i = clauses.size(); i-- > 0;) {
         // Only resolved values take slots, so a live clause is never a chosen min/max.
         if (clause_live_[i] != epoch_) continue;
         const Clause& c = clauses[i];
         const bool binary = op_arity(c.op) == 2;
-        const ClauseOperands& v = source.operand_values()[i];
-        const ValueId a = resolve(v.a), b = binary ? resolve(v.b) : a;
+        const ClauseOperands& v = operands[i];
+        const ValueId a = resolve(v.a, lane), b = binary ? resolve(v.b, lane) : a;
         const std::uint32_t slot_a = take_slot(a), slot_b = binary ? take_slot(b) : c.b;
         // Freed after the operands took theirs, so the output never aliases an
         // operand (the batch evaluator relies on that).
-        free_slots_.push_back(working_slot_[i]);
-        emitted_at_[i] = static_cast<std::uint32_t>(reversed_.size());
-        reversed_.push_back({c.op, working_mark | working_slot_[i], slot_a, slot_b});
-        reversed_operands_.push_back({a, b});
+        free_slots_[free_count_++] = working_slot_[i];
+        emitted_at_[i] = kept;
+        reversed_[kept] = {c.op, working_mark | working_slot_[i], slot_a, slot_b};
+        reversed_operands_[kept] = {a, b};
+        ++kept;
     }
 
-    emitted_ = static_cast<std::uint32_t>(reversed_.size());
-    out.clauses_.resize(emitted_);
-    out.operand_values_.resize(emitted_);
-    for (std::size_t k = 0; k < emitted_; ++k) {
-        const Clause& c = reversed_[emitted_ - 1 - k];
+    // The final slot of a marked one: its number plus its group's start.
+    const std::array<std::uint32_t, 3> group_start{0, 3, 3 + constants_};
+    const auto final_slot = [&](std::uint32_t marked) { return (marked & number_bits) + group_start[marked >> mark_shift]; };
+    // A clause's value id counts from the start of the pruned tape; a constant's is its slot.
+    const auto final_value = [&](ValueId v) {
+        if (v & clause_value) return clause_value | (kept - 1 - emitted_at_[v & ~clause_value]);
+        return v < 3 ? v : 3 + constant_index_[v];
+    };
+    out.clauses_.resize(kept);
+    out.operand_values_.resize(kept);
+    for (std::uint32_t k = 0; k < kept; ++k) {
+        const Clause& c = reversed_[kept - 1 - k];
         const bool binary = op_arity(c.op) == 2;
         out.clauses_[k] = {c.op, final_slot(c.out), final_slot(c.a), binary ? final_slot(c.b) : c.b};
-        const ClauseOperands& v = reversed_operands_[emitted_ - 1 - k];
+        const ClauseOperands& v = reversed_operands_[kept - 1 - k];
         out.operand_values_[k] = {final_value(v.a), final_value(v.b)};
     }
     out.constants_.resize(constants_);

@@ -15,17 +15,23 @@
 // warm-up it does not allocate.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "zeroset/expr/tape.hpp"
 #include "zeroset/math/box3.hpp"
 #include "zeroset/math/interval.hpp"
+#include "zeroset/math/interval_lanes.hpp"
 
 namespace zeroset {
 
 class TapePruner {
 public:
+    /// How many boxes one walk of the lanes evaluate() takes.
+    static constexpr int lanes = IntervalLanes::count;
+
     /// Sized for `full` and every tape pruned from it.
     explicit TapePruner(const Tape& full);
 
@@ -33,56 +39,63 @@ public:
     /// and writes into `out` the clauses live there. Returns f over the box.
     Interval prune(const Tape& source, const Box3& box, Tape& out) {
         const Interval value = evaluate(source, box);
-        simplify(out);
+        simplify(out, 0);
         return value;
     }
 
     /// prune() in two steps, for callers that may not need the pruned tape:
     /// f over the box, recording which side of each min and max wins there…
     Interval evaluate(const Tape& source, const Box3& box);
-    /// … and the tape to walk in the box of the last evaluate(): `out`,
+    /// … or over four boxes in one walk, lane k for boxes[k] (the same
+    /// bits as four calls of the one-box evaluate()) …
+    IntervalLanes evaluate(const Tape& source, std::span<const Box3, lanes> boxes);
+    /// … and the tape to walk in box `lane` of the last evaluate(): `out`,
     /// filled with the pruned tape, or — when no min or max has a side that
     /// wins over the whole box, so pruning would keep everything — that
     /// evaluation's source itself, with `out` left as it was.
-    const Tape& simplified(Tape& out) {
-        if (choices_made_ == 0) return *source_;
-        simplify(out);
+    const Tape& simplified(Tape& out, int lane = 0) {
+        if (choices_made_[lane] == 0) return *source_;
+        simplify(out, lane);
         return out;
     }
 
 private:
     enum class Choice : std::uint8_t { Both, Left, Right };
 
-    /// Writes the tape pruned to the box of the last evaluate() into `out`.
-    void simplify(Tape& out);
+    /// The walk of both evaluate()s, over the number type T (Interval or IntervalLanes).
+    template <class T>
+    T walk(const Tape& source, T* slots);
+    /// walk() of four lanes compiled for AVX2 (x86-64 builds for older CPUs only).
+    IntervalLanes walk_avx2(const Tape& source, IntervalLanes* slots);
+    /// Writes the tape pruned to box `lane` of the last evaluate() into `out`.
+    void simplify(Tape& out, int lane);
 
-    /// The value `v` is over the box: the winner of a min or max that has one.
-    [[nodiscard]] ValueId resolve(ValueId v) const {
+    /// The value `v` is over box `lane`: the winner of a min or max that has one.
+    [[nodiscard]] ValueId resolve(ValueId v, int lane) const {
         if ((v & clause_value) == 0) return v;
         const std::uint32_t j = v & ~clause_value;
-        return choices_[j] == Choice::Both ? v : equals_[j];
+        return choices_[j][lane] == Choice::Both ? v : equals_[j][lane];
     }
     /// The slot of `v` in the pruned tape while it is being built, given at
-    /// its last use (the first seen walking backwards), encoded until the
-    /// number of constants is known.
+    /// its last use (the first seen walking backwards), marked with its group
+    /// until the number of constants is known.
     std::uint32_t take_slot(ValueId v);
-    [[nodiscard]] std::uint32_t final_slot(std::uint32_t encoded) const;
-    [[nodiscard]] ValueId final_value(ValueId v) const;
 
     const Tape* source_ = nullptr;  // of the last evaluate()
-    std::size_t choices_made_ = 0;
+    std::array<std::size_t, lanes> choices_made_{};
     std::vector<Interval> slots_;
-    std::vector<Choice> choices_;     // per clause of the source tape
-    std::vector<ValueId> equals_;     // per chosen min/max: the (resolved) value it equals
+    std::vector<IntervalLanes> lane_slots_;         // made by the first lanes evaluate()
+    std::vector<std::array<Choice, lanes>> choices_;  // per clause of the source tape and lane
+    std::vector<std::array<ValueId, lanes>> equals_;  // per chosen min/max and lane: the (resolved) value it equals
     // Per clause and per constant of the source, stamped with epoch_ once live.
     std::vector<std::uint32_t> clause_live_, constant_live_;
     std::vector<std::uint32_t> working_slot_;    // per live clause: its working slot
     std::vector<std::uint32_t> emitted_at_;      // per live clause: its position, counted from the end
     std::vector<std::uint32_t> constant_index_;  // per live constant: its place among the pruned tape's constants
-    std::vector<std::uint32_t> free_slots_;
+    std::vector<std::uint32_t> free_slots_;   // a stack of free_count_ working slots
     std::vector<Clause> reversed_;  // the kept clauses, last first, slots still marked
     std::vector<ClauseOperands> reversed_operands_;
-    std::uint32_t working_slots_ = 0, constants_ = 0, emitted_ = 0;
+    std::uint32_t free_count_ = 0, working_slots_ = 0, constants_ = 0;
     std::uint32_t epoch_ = 0;
 };
 

@@ -109,35 +109,69 @@ public:
     const Tape* visit(int x0, int y0, int side, const Tape& parent, Tape& pruned) {
         const int x1 = std::min(x0 + side, size_), y1 = std::min(y0 + side, size_);
         const Interval f = pruner_.evaluate(parent, grid_.box(x0, y0, x1, y1));
-        ++stats.tiles;
         stats.interval_clauses += parent.clauses().size();
-        const bool undefined = f.is_empty();
-        if (every_pixel_ || !(f.lo > 0.0 || f.hi < 0.0 || undefined)) return &pruner_.simplified(pruned);
-        const float value = undefined ? std::numeric_limits<float>::quiet_NaN() : decided_value(f);
-        for (int y = y0; y < y1; ++y) std::fill(row(y) + x0, row(y) + x1, value);
-        ++stats.tiles_decided;
-        stats.pixels_decided += static_cast<std::uint64_t>(x1 - x0) * static_cast<std::uint64_t>(y1 - y0);
-        return nullptr;
+        if (fill_if_decided(x0, y0, x1, y1, f)) return nullptr;
+        return &pruner_.simplified(pruned);
     }
 
-    /// The whole quadtree below the tile, depth first.
-    void descend(int x0, int y0, int side, const Tape& parent, int depth) {
-        if (x0 >= size_ || y0 >= size_) return;
-        const Tape* tape = visit(x0, y0, side, parent, pruned_[static_cast<std::size_t>(depth)]);
-        if (!tape) return;
+    /// The four sub-tiles of a tile whose sign is not decided, given the
+    /// tape pruned to it, evaluated in one walk of that tape, each in a lane
+    /// of its own. Fills those whose sign is decided; returns the tapes of
+    /// the others (in `pruned`, or `tape` itself) and nullptr for the rest.
+    std::array<const Tape*, 4> split(int x0, int y0, int side, const Tape& tape, std::array<Tape, 4>& pruned) {
+        const int half = side / 2;
+        std::array<Box3, TapePruner::lanes> boxes;
+        std::array<bool, TapePruner::lanes> in_image{};
+        for (std::size_t k = 0; k < quadrants.size(); ++k) {
+            const int qx = x0 + quadrants[k].first * half, qy = y0 + quadrants[k].second * half;
+            in_image[k] = qx < size_ && qy < size_;
+            // A sub-tile outside the image takes the first one's box: it is skipped below.
+            boxes[k] = in_image[k] ? grid_.box(qx, qy, std::min(qx + half, size_), std::min(qy + half, size_)) : boxes[0];
+        }
+        const IntervalLanes f = pruner_.evaluate(tape, boxes);
+        stats.interval_clauses += tape.clauses().size();
+        std::array<const Tape*, 4> below{};
+        for (std::size_t k = 0; k < quadrants.size(); ++k) {
+            if (!in_image[k]) continue;
+            const int qx = x0 + quadrants[k].first * half, qy = y0 + quadrants[k].second * half;
+            const int lane = static_cast<int>(k);
+            if (!fill_if_decided(qx, qy, std::min(qx + half, size_), std::min(qy + half, size_), f.lane(lane)))
+                below[k] = &pruner_.simplified(pruned[k], lane);
+        }
+        return below;
+    }
+
+    /// The whole quadtree below a tile whose sign is not decided, depth
+    /// first, given the tape pruned to it.
+    void descend(int x0, int y0, int side, const Tape& tape, int depth) {
         if (side <= leaf_size) {
-            evaluate_leaf(x0, y0, *tape);
+            evaluate_leaf(x0, y0, tape);
             return;
         }
         const int half = side / 2;
-        for (const auto& [dx, dy] : quadrants)
-            descend(x0 + dx * half, y0 + dy * half, half, *tape, depth + 1);
+        const std::array<const Tape*, 4> below = split(x0, y0, side, tape, pruned_[static_cast<std::size_t>(depth)]);
+        for (std::size_t k = 0; k < quadrants.size(); ++k)
+            if (below[k])
+                descend(x0 + quadrants[k].first * half, y0 + quadrants[k].second * half, half, *below[k], depth + 1);
     }
 
     SliceStats stats;
 
 private:
     float* row(int y) { return values_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(size_); }
+
+    /// Counts the tile [x0, x1) × [y0, y1), over which f lies in `f`, and
+    /// fills it when that decides its sign (never in every-pixel mode).
+    bool fill_if_decided(int x0, int y0, int x1, int y1, const Interval& f) {
+        ++stats.tiles;
+        const bool undefined = f.is_empty();
+        if (every_pixel_ || !(f.lo > 0.0 || f.hi < 0.0 || undefined)) return false;
+        const float value = undefined ? std::numeric_limits<float>::quiet_NaN() : decided_value(f);
+        for (int y = y0; y < y1; ++y) std::fill(row(y) + x0, row(y) + x1, value);
+        ++stats.tiles_decided;
+        stats.pixels_decided += static_cast<std::uint64_t>(x1 - x0) * static_cast<std::uint64_t>(y1 - y0);
+        return true;
+    }
 
     void evaluate_leaf(int x0, int y0, const Tape& tape) {
         const int x1 = std::min(x0 + leaf_size, size_), y1 = std::min(y0 + leaf_size, size_);
@@ -168,7 +202,7 @@ private:
     std::vector<float>& values_;
     TapePruner pruner_;
     BatchEvaluator<float> batch_;
-    std::vector<Tape> pruned_;  // pruned_[d]: the tape of the tile being visited at depth d
+    std::vector<std::array<Tape, TapePruner::lanes>> pruned_;  // pruned_[d]: the tapes of the sub-tiles of the tile at depth d
     std::array<float, leaf_pixels> xs_{}, ys_{}, zs_{}, out_{};
 };
 
@@ -183,10 +217,10 @@ void add(SliceStats& total, const SliceStats& part) {
     total.max_leaf_slots = std::max(total.max_leaf_slots, part.max_leaf_slots);
 }
 
-/// A tile for a worker, and the tape pruned to the tile above it.
+/// A tile for a worker whose sign is not decided, and the tape pruned to it.
 struct Task {
     int x0, y0;
-    const Tape* parent;
+    const Tape* tape;
 };
 
 }  // namespace
@@ -219,30 +253,32 @@ SliceField slice(const Tape& tape, const SliceSettings& settings) {
     visitors.reserve(static_cast<std::size_t>(thread_count));
     for (int t = 0; t < thread_count; ++t) visitors.emplace_back(tape, grid, settings, field.values);
 
-    // The levels above the tasks breadth first, each level's tiles in
-    // parallel; then the tasks' subtrees depth first, in parallel.
+    // The root, then the levels above the tasks breadth first, each level's
+    // tiles split in parallel; then the tasks' subtrees depth first, in
+    // parallel. Every tile in `tasks` is one whose sign is not decided.
     const int task_side = std::max(2 * leaf_size, root_side / 16);  // up to 16 × 16 tasks
-    std::deque<std::vector<Tape>> level_tapes;  // stable addresses for the tiles below
-    std::vector<Task> tasks{{0, 0, &tape}};
+    Tape root_tape;
+    const Tape* root = visitors[0].visit(0, 0, root_side, tape, root_tape);
+    std::vector<Task> tasks;
+    if (root) tasks.push_back({0, 0, root});
+    std::deque<std::vector<std::array<Tape, 4>>> level_tapes;  // stable addresses for the tiles below
     for (int side = root_side; side > task_side; side /= 2) {
-        std::vector<Tape>& tapes = level_tapes.emplace_back(tasks.size());
-        std::vector<const Tape*> tile_tapes(tasks.size(), nullptr);
+        std::vector<std::array<Tape, 4>>& tapes = level_tapes.emplace_back(tasks.size());
+        std::vector<std::array<const Tape*, 4>> split(tasks.size());
         in_parallel(visitors, tasks.size(), [&](TileVisitor& visitor, std::size_t i) {
-            const Task& t = tasks[i];
-            if (t.x0 < settings.size && t.y0 < settings.size)
-                tile_tapes[i] = visitor.visit(t.x0, t.y0, side, *t.parent, tapes[i]);
+            split[i] = visitor.split(tasks[i].x0, tasks[i].y0, side, *tasks[i].tape, tapes[i]);
         });
         std::vector<Task> below;
         const int half = side / 2;
-        for (std::size_t i = 0; i < tasks.size(); ++i) {
-            if (!tile_tapes[i]) continue;
-            for (const auto& [dx, dy] : quadrants)
-                below.push_back({tasks[i].x0 + dx * half, tasks[i].y0 + dy * half, tile_tapes[i]});
-        }
+        for (std::size_t i = 0; i < tasks.size(); ++i)
+            for (std::size_t k = 0; k < quadrants.size(); ++k)
+                if (split[i][k])
+                    below.push_back({tasks[i].x0 + quadrants[k].first * half, tasks[i].y0 + quadrants[k].second * half,
+                                     split[i][k]});
         tasks = std::move(below);
     }
     in_parallel(visitors, tasks.size(), [&](TileVisitor& visitor, std::size_t i) {
-        visitor.descend(tasks[i].x0, tasks[i].y0, task_side, *tasks[i].parent, 0);
+        visitor.descend(tasks[i].x0, tasks[i].y0, task_side, *tasks[i].tape, 0);
     });
 
     for (const TileVisitor& v : visitors) add(field.stats, v.stats);

@@ -42,13 +42,13 @@ struct SliceSettings {
 
 /// What the slicing cost, to compare with the full tape.
 struct SliceStats {
-    std::uint64_t tiles = 0;              // interval evaluations (one per tile visited)
+    std::uint64_t tiles = 0;              // tiles whose interval was evaluated
     std::uint64_t tiles_decided = 0;      // tiles whose sign the interval decided
     std::uint64_t pixels_decided = 0;     // pixels in those tiles
     std::uint64_t leaf_batches = 0;       // 16×16 tiles evaluated pixel by pixel
     std::uint64_t pixels_evaluated = 0;
     std::uint64_t leaf_clauses = 0;       // clauses walked by the leaf batches, summed
-    std::uint64_t interval_clauses = 0;   // clauses walked by the interval evaluations, summed
+    std::uint64_t interval_clauses = 0;   // clauses walked by the interval evaluations (one walk: up to four tiles)
     std::uint32_t max_leaf_slots = 0;     // the most slots a leaf tape needed
     std::size_t full_clauses = 0;
     std::uint32_t full_slots = 0;
