@@ -1,8 +1,8 @@
 // Tape: an expression compiled to a flat, topologically ordered list of
 // clauses {op, out, a, b} over numbered slots — the form every evaluator walks.
-// Slots 0, 1, 2 hold x, y, z; then one slot per distinct constant (loaded once,
-// never overwritten); then working slots, each reused once its value is dead
-// (linear-scan register allocation), so a 10 000-clause model needs only a
+// Slots 0, 1, 2 hold x, y, z; every distinct constant has a slot of its own
+// (loaded once, never overwritten); working slots are reused once their value
+// is dead (linear-scan register allocation), so a 10 000-clause model needs only a
 // few hundred slots and stays in cache. A clause's output slot never aliases
 // one of its operands (the batch evaluator relies on that). Tapes pruned to a
 // box (expr/tape_pruner.hpp) follow the same rules with their own numbering.
@@ -48,8 +48,10 @@ public:
     [[nodiscard]] const std::vector<std::pair<std::uint32_t, double>>& constants() const { return constants_; }
     [[nodiscard]] std::uint32_t slot_count() const { return slot_count_; }
     [[nodiscard]] std::uint32_t result_slot() const { return result_slot_; }
-    /// Per clause, the values its operands are.
+    /// Per clause, the values its operands are (none in a tape pruned
+    /// without them, which cannot be pruned again).
     [[nodiscard]] const std::vector<ClauseOperands>& operand_values() const { return operand_values_; }
+    [[nodiscard]] bool prunable() const { return operand_values_.size() == clauses_.size(); }
     [[nodiscard]] ValueId result_value() const { return result_value_; }
     /// True when every op is +, −, ×, neg, square or powi with n ≥ 0.
     [[nodiscard]] bool is_polynomial() const;

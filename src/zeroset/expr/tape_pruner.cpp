@@ -1,11 +1,12 @@
 // Interval evaluation records, for each min and max, the side that wins over
 // the box and so which value it equals (values followed by their ids,
 // Tape::operand_values); simplification is one backward pass over the
-// source tape and one over the clauses it keeps.
+// source tape, and one over the clauses it keeps for their value ids.
 #include "zeroset/expr/tape_pruner.hpp"
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 
 namespace zeroset {
 
@@ -17,7 +18,7 @@ TapePruner::TapePruner(const Tape& full)
       constant_live_(full.slot_count(), 0),
       working_slot_(full.clauses().size()),
       emitted_at_(full.clauses().size()),
-      constant_index_(full.slot_count()) {}
+      constant_slot_(full.slot_count()) {}
 
 namespace {
 
@@ -39,6 +40,7 @@ constexpr int lane_count<IntervalLanes> = IntervalLanes::count;
 template <class T>
 [[gnu::flatten]] T TapePruner::walk(const Tape& source, T* s) {
     constexpr int n = lane_count<T>;
+    assert(source.prunable());
     source_ = &source;
     choices_made_.fill(0);
     for (const auto& [slot, value] : source.constants()) s[slot] = T(value);
@@ -102,40 +104,28 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
 }
 #endif
 
-namespace {
-// How take_slot() marks a slot until the pruned tape's layout is known, in
-// its top two bits: x, y and z (slots 0, 1, 2) unmarked, then constants and
-// working slots, each numbered from 0 in its group.
-constexpr int mark_shift = 30;
-constexpr std::uint32_t constant_mark = std::uint32_t{1} << mark_shift;
-constexpr std::uint32_t working_mark = std::uint32_t{2} << mark_shift;
-constexpr std::uint32_t number_bits = constant_mark - 1;
-}  // namespace
-
 inline std::uint32_t TapePruner::take_slot(ValueId v) {
     if (v & clause_value) {
         const std::uint32_t j = v & ~clause_value;
         if (clause_live_[j] != epoch_) {
             clause_live_[j] = epoch_;
-            working_slot_[j] = free_count_ > 0 ? free_slots_[--free_count_] : working_slots_++;
+            working_slot_[j] = free_count_ > 0 ? free_slots_[--free_count_] : next_slot_++;
         }
-        return working_mark | working_slot_[j];
+        return working_slot_[j];
     }
     if (v < 3) return v;
-    if (constant_live_[v] != epoch_) {
+    if (constant_live_[v] != epoch_) {  // a constant's slot is never freed: it is loaded once
         constant_live_[v] = epoch_;
-        constant_index_[v] = constants_++;
+        constant_slot_[v] = next_slot_++;
     }
-    return constant_mark | constant_index_[v];
+    return constant_slot_[v];
 }
 
 // One backward pass does liveness, slot allocation and emission: walking
 // backwards, the first use of a value met is its last use, where it takes a
-// slot; its definition frees the slot. The clauses come out reversed and with
-// marked slots; a pass over the live clauses alone puts them in order with
-// their final slots: constants after x, y, z (loaded once, never written),
-// then the working slots.
-[[gnu::flatten]] void TapePruner::simplify(Tape& out, int lane) {
+// slot; its definition frees the slot. Slots are final when taken; only the
+// clauses' value ids wait for the count of kept clauses.
+[[gnu::flatten]] void TapePruner::simplify(Tape& out, int lane, ValueIds ids) {
     const Tape& source = *source_;
     if (++epoch_ == 0) {  // stamps wrapped: clear them once every 2^32 prunes
         std::fill(clause_live_.begin(), clause_live_.end(), 0);
@@ -143,20 +133,22 @@ inline std::uint32_t TapePruner::take_slot(ValueId v) {
         epoch_ = 1;
     }
     free_count_ = 0;
-    working_slots_ = constants_ = 0;
+    next_slot_ = 3;
     const std::vector<Clause>& clauses = source.clauses();
     const std::vector<ClauseOperands>& operands = source.operand_values();
+    const std::size_t n = clauses.size();
     // At most every clause is kept, and each frees one slot.
-    if (reversed_.size() < clauses.size()) {
-        reversed_.resize(clauses.size());
-        reversed_operands_.resize(clauses.size());
-        free_slots_.resize(clauses.size());
+    if (kept_.size() < n) {
+        kept_.resize(n);
+        kept_operands_.resize(n);
+        free_slots_.resize(n);
     }
+    const bool with_ids = ids == ValueIds::Keep;
 
     const ValueId root = resolve(source.result_value(), lane);
     const std::uint32_t root_slot = take_slot(root);
-    std::uint32_t kept = 0;
-    for (std::size_t i = clauses.size(); i-- > 0;) {
+    std::size_t first = n;  // the kept clauses fill kept_[first, n)
+    for (std::size_t i = n; i-- > 0;) {
         // Only resolved values take slots, so a live clause is never a chosen min/max.
         if (clause_live_[i] != epoch_) continue;
         const Clause& c = clauses[i];
@@ -167,36 +159,29 @@ inline std::uint32_t TapePruner::take_slot(ValueId v) {
         // Freed after the operands took theirs, so the output never aliases an
         // operand (the batch evaluator relies on that).
         free_slots_[free_count_++] = working_slot_[i];
-        emitted_at_[i] = kept;
-        reversed_[kept] = {c.op, working_mark | working_slot_[i], slot_a, slot_b};
-        reversed_operands_[kept] = {a, b};
-        ++kept;
+        kept_[--first] = {c.op, working_slot_[i], slot_a, slot_b};
+        if (with_ids) {
+            emitted_at_[i] = static_cast<std::uint32_t>(first);
+            kept_operands_[first] = {a, b};  // the source's ids, renumbered below
+        }
     }
 
-    // The final slot of a marked one: its number plus its group's start.
-    const std::array<std::uint32_t, 3> group_start{0, 3, 3 + constants_};
-    const auto final_slot = [&](std::uint32_t marked) { return (marked & number_bits) + group_start[marked >> mark_shift]; };
-    // A clause's value id counts from the start of the pruned tape; a constant's is its slot.
-    const auto final_value = [&](ValueId v) {
-        if (v & clause_value) return clause_value | (kept - 1 - emitted_at_[v & ~clause_value]);
-        return v < 3 ? v : 3 + constant_index_[v];
+    out.clauses_.assign(kept_.begin() + static_cast<std::ptrdiff_t>(first), kept_.begin() + static_cast<std::ptrdiff_t>(n));
+    // A clause's value id is its place in the pruned tape; a constant's is its slot.
+    const auto renumber = [&](ValueId v) -> ValueId {
+        if (v & clause_value) return clause_value | (emitted_at_[v & ~clause_value] - static_cast<std::uint32_t>(first));
+        return v < 3 ? v : constant_slot_[v];
     };
-    out.clauses_.resize(kept);
-    out.operand_values_.resize(kept);
-    for (std::uint32_t k = 0; k < kept; ++k) {
-        const Clause& c = reversed_[kept - 1 - k];
-        const bool binary = op_arity(c.op) == 2;
-        out.clauses_[k] = {c.op, final_slot(c.out), final_slot(c.a), binary ? final_slot(c.b) : c.b};
-        const ClauseOperands& v = reversed_operands_[kept - 1 - k];
-        out.operand_values_[k] = {final_value(v.a), final_value(v.b)};
-    }
-    out.constants_.resize(constants_);
-    for (const auto& [slot, value] : source.constants()) {
-        if (constant_live_[slot] == epoch_) out.constants_[constant_index_[slot]] = {3 + constant_index_[slot], value};
-    }
-    out.result_slot_ = final_slot(root_slot);
-    out.result_value_ = final_value(root);
-    out.slot_count_ = 3 + constants_ + working_slots_;
+    out.operand_values_.resize(with_ids ? n - first : 0);
+    if (with_ids)
+        for (std::size_t k = first; k < n; ++k)
+            out.operand_values_[k - first] = {renumber(kept_operands_[k].a), renumber(kept_operands_[k].b)};
+    out.constants_.clear();
+    for (const auto& [slot, value] : source.constants())
+        if (constant_live_[slot] == epoch_) out.constants_.emplace_back(constant_slot_[slot], value);
+    out.result_slot_ = root_slot;
+    out.result_value_ = with_ids ? renumber(root) : 0;
+    out.slot_count_ = next_slot_;
 }
 
 }  // namespace zeroset

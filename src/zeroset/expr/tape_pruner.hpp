@@ -6,10 +6,11 @@
 // gradients, sub-boxes) walks the short tape instead.
 //
 // Pruning and slot allocation are one job: the pruned tape gets its own,
-// compact slot numbering (live constants first, then working slots reused
-// once dead), so a short tape is also short in slots and a batch of lanes
-// over it stays in L1. The analysis follows values, not slots, so any tape
-// can be pruned — the full tape or one already pruned, over a smaller box.
+// compact slot numbering (each live constant a slot of its own, working
+// slots reused once dead), so a short tape is also short in slots and a
+// batch of lanes over it stays in L1. The analysis follows values, not
+// slots, so any tape can be pruned — the full tape or one already pruned,
+// over a smaller box — unless it was made without value ids.
 // Evaluators switch to a pruned tape with rebind(), which loads its
 // constants. Pruning reuses its buffers and the output tape's: after
 // warm-up it does not allocate.
@@ -39,7 +40,7 @@ public:
     /// and writes into `out` the clauses live there. Returns f over the box.
     Interval prune(const Tape& source, const Box3& box, Tape& out) {
         const Interval value = evaluate(source, box);
-        simplify(out, 0);
+        simplify(out, 0, ValueIds::Keep);
         return value;
     }
 
@@ -49,13 +50,17 @@ public:
     /// … or over four boxes in one walk, lane k for boxes[k] (the same
     /// bits as four calls of the one-box evaluate()) …
     IntervalLanes evaluate(const Tape& source, std::span<const Box3, lanes> boxes);
+    /// Whether a pruned tape gets the value ids that pruning it again needs
+    /// (Tape::prunable); a tape that will only be evaluated can do without.
+    enum class ValueIds { Keep, Drop };
+
     /// … and the tape to walk in box `lane` of the last evaluate(): `out`,
     /// filled with the pruned tape, or — when no min or max has a side that
     /// wins over the whole box, so pruning would keep everything — that
     /// evaluation's source itself, with `out` left as it was.
-    const Tape& simplified(Tape& out, int lane = 0) {
+    const Tape& simplified(Tape& out, int lane = 0, ValueIds ids = ValueIds::Keep) {
         if (choices_made_[lane] == 0) return *source_;
-        simplify(out, lane);
+        simplify(out, lane, ids);
         return out;
     }
 
@@ -68,7 +73,7 @@ private:
     /// walk() of four lanes compiled for AVX2 (x86-64 builds for older CPUs only).
     IntervalLanes walk_avx2(const Tape& source, IntervalLanes* slots);
     /// Writes the tape pruned to box `lane` of the last evaluate() into `out`.
-    void simplify(Tape& out, int lane);
+    void simplify(Tape& out, int lane, ValueIds ids);
 
     /// The value `v` is over box `lane`: the winner of a min or max that has one.
     [[nodiscard]] ValueId resolve(ValueId v, int lane) const {
@@ -76,9 +81,9 @@ private:
         const std::uint32_t j = v & ~clause_value;
         return choices_[j][lane] == Choice::Both ? v : equals_[j][lane];
     }
-    /// The slot of `v` in the pruned tape while it is being built, given at
-    /// its last use (the first seen walking backwards), marked with its group
-    /// until the number of constants is known.
+    /// The slot of `v` in the pruned tape, taken at its last use (the first
+    /// seen walking backwards): a working slot freed at a value's definition,
+    /// or a new one; a constant's is never freed.
     std::uint32_t take_slot(ValueId v);
 
     const Tape* source_ = nullptr;  // of the last evaluate()
@@ -89,13 +94,13 @@ private:
     std::vector<std::array<ValueId, lanes>> equals_;  // per chosen min/max and lane: the (resolved) value it equals
     // Per clause and per constant of the source, stamped with epoch_ once live.
     std::vector<std::uint32_t> clause_live_, constant_live_;
-    std::vector<std::uint32_t> working_slot_;    // per live clause: its working slot
-    std::vector<std::uint32_t> emitted_at_;      // per live clause: its position, counted from the end
-    std::vector<std::uint32_t> constant_index_;  // per live constant: its place among the pruned tape's constants
-    std::vector<std::uint32_t> free_slots_;   // a stack of free_count_ working slots
-    std::vector<Clause> reversed_;  // the kept clauses, last first, slots still marked
-    std::vector<ClauseOperands> reversed_operands_;
-    std::uint32_t free_count_ = 0, working_slots_ = 0, constants_ = 0;
+    std::vector<std::uint32_t> working_slot_;   // per live clause: its slot in the pruned tape
+    std::vector<std::uint32_t> emitted_at_;     // per live clause: its place in kept_
+    std::vector<std::uint32_t> constant_slot_;  // per live constant: its slot in the pruned tape
+    std::vector<std::uint32_t> free_slots_;     // a stack of free_count_ working slots
+    std::vector<Clause> kept_;                  // the kept clauses, filled from the end
+    std::vector<ClauseOperands> kept_operands_;  // their operands' ids in the source
+    std::uint32_t free_count_ = 0, next_slot_ = 3;
     std::uint32_t epoch_ = 0;
 };
 
