@@ -104,23 +104,6 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
 }
 #endif
 
-inline std::uint32_t TapePruner::take_slot(ValueId v) {
-    if (v & clause_value) {
-        const std::uint32_t j = v & ~clause_value;
-        if (clause_live_[j] != epoch_) {
-            clause_live_[j] = epoch_;
-            working_slot_[j] = free_count_ > 0 ? free_slots_[--free_count_] : next_slot_++;
-        }
-        return working_slot_[j];
-    }
-    if (v < 3) return v;
-    if (constant_live_[v] != epoch_) {  // a constant's slot is never freed: it is loaded once
-        constant_live_[v] = epoch_;
-        constant_slot_[v] = next_slot_++;
-    }
-    return constant_slot_[v];
-}
-
 // One backward pass does liveness, slot allocation and emission: walking
 // backwards, the first use of a value met is its last use, where it takes a
 // slot; its definition frees the slot. Slots are final when taken; only the
@@ -132,8 +115,31 @@ inline std::uint32_t TapePruner::take_slot(ValueId v) {
         std::fill(constant_live_.begin(), constant_live_.end(), 0);
         epoch_ = 1;
     }
-    free_count_ = 0;
-    next_slot_ = 3;
+    // The counters live in locals, which the compiler keeps in registers
+    // (members could alias the arrays written below).
+    const std::uint32_t epoch = epoch_;
+    std::uint32_t free_count = 0, next_slot = 3;
+    std::uint32_t *clause_live = clause_live_.data(), *constant_live = constant_live_.data();
+    std::uint32_t *working_slot = working_slot_.data(), *constant_slot = constant_slot_.data();
+    // The slot of `v` in the pruned tape, taken at its last use (the first
+    // seen walking backwards): a working slot freed at a value's definition,
+    // or a new one; a constant's is never freed, as it is loaded once.
+    const auto take_slot = [&](ValueId v) {
+        if (v & clause_value) {
+            const std::uint32_t j = v & ~clause_value;
+            if (clause_live[j] != epoch) {
+                clause_live[j] = epoch;
+                working_slot[j] = free_count > 0 ? free_slots_[--free_count] : next_slot++;
+            }
+            return working_slot[j];
+        }
+        if (v < 3) return v;
+        if (constant_live[v] != epoch) {
+            constant_live[v] = epoch;
+            constant_slot[v] = next_slot++;
+        }
+        return constant_slot[v];
+    };
     const std::vector<Clause>& clauses = source.clauses();
     const std::vector<ClauseOperands>& operands = source.operand_values();
     const std::size_t n = clauses.size();
@@ -150,7 +156,7 @@ inline std::uint32_t TapePruner::take_slot(ValueId v) {
     std::size_t first = n;  // the kept clauses fill kept_[first, n)
     for (std::size_t i = n; i-- > 0;) {
         // Only resolved values take slots, so a live clause is never a chosen min/max.
-        if (clause_live_[i] != epoch_) continue;
+        if (clause_live[i] != epoch) continue;
         const Clause& c = clauses[i];
         const bool binary = op_arity(c.op) == 2;
         const ClauseOperands& v = operands[i];
@@ -158,8 +164,8 @@ inline std::uint32_t TapePruner::take_slot(ValueId v) {
         const std::uint32_t slot_a = take_slot(a), slot_b = binary ? take_slot(b) : c.b;
         // Freed after the operands took theirs, so the output never aliases an
         // operand (the batch evaluator relies on that).
-        free_slots_[free_count_++] = working_slot_[i];
-        kept_[--first] = {c.op, working_slot_[i], slot_a, slot_b};
+        free_slots_[free_count++] = working_slot[i];
+        kept_[--first] = {c.op, working_slot[i], slot_a, slot_b};
         if (with_ids) {
             emitted_at_[i] = static_cast<std::uint32_t>(first);
             kept_operands_[first] = {a, b};  // the source's ids, renumbered below
@@ -170,7 +176,7 @@ inline std::uint32_t TapePruner::take_slot(ValueId v) {
     // A clause's value id is its place in the pruned tape; a constant's is its slot.
     const auto renumber = [&](ValueId v) -> ValueId {
         if (v & clause_value) return clause_value | (emitted_at_[v & ~clause_value] - static_cast<std::uint32_t>(first));
-        return v < 3 ? v : constant_slot_[v];
+        return v < 3 ? v : constant_slot[v];
     };
     out.operand_values_.resize(with_ids ? n - first : 0);
     if (with_ids)
@@ -178,10 +184,10 @@ inline std::uint32_t TapePruner::take_slot(ValueId v) {
             out.operand_values_[k - first] = {renumber(kept_operands_[k].a), renumber(kept_operands_[k].b)};
     out.constants_.clear();
     for (const auto& [slot, value] : source.constants())
-        if (constant_live_[slot] == epoch_) out.constants_.emplace_back(constant_slot_[slot], value);
+        if (constant_live[slot] == epoch) out.constants_.emplace_back(constant_slot[slot], value);
     out.result_slot_ = root_slot;
     out.result_value_ = with_ids ? renumber(root) : 0;
-    out.slot_count_ = next_slot_;
+    out.slot_count_ = next_slot;
 }
 
 }  // namespace zeroset

@@ -81,11 +81,6 @@ private:
         const std::uint32_t j = v & ~clause_value;
         return choices_[j][lane] == Choice::Both ? v : equals_[j][lane];
     }
-    /// The slot of `v` in the pruned tape, taken at its last use (the first
-    /// seen walking backwards): a working slot freed at a value's definition,
-    /// or a new one; a constant's is never freed.
-    std::uint32_t take_slot(ValueId v);
-
     const Tape* source_ = nullptr;  // of the last evaluate()
     std::array<std::size_t, lanes> choices_made_{};
     std::vector<Interval> slots_;
@@ -97,10 +92,9 @@ private:
     std::vector<std::uint32_t> working_slot_;   // per live clause: its slot in the pruned tape
     std::vector<std::uint32_t> emitted_at_;     // per live clause: its place in kept_
     std::vector<std::uint32_t> constant_slot_;  // per live constant: its slot in the pruned tape
-    std::vector<std::uint32_t> free_slots_;     // a stack of free_count_ working slots
+    std::vector<std::uint32_t> free_slots_;     // a stack of the free working slots
     std::vector<Clause> kept_;                  // the kept clauses, filled from the end
     std::vector<ClauseOperands> kept_operands_;  // their operands' ids in the source
-    std::uint32_t free_count_ = 0, next_slot_ = 3;
     std::uint32_t epoch_ = 0;
 };
 
