@@ -103,8 +103,8 @@ TEST(Bvh, ParallelBuildAnswersLikeASerialOne) {
 TEST(Bvh, BoxesReachingPastEveryDoubleStillGoInTheTree) {
     // Boxes out at ±1.7e308 make the centroids' extent overflow to infinity;
     // binning once turned that into an int it cannot hold (found by the
-    // render fuzzer under clang's UBSan; the sanitizer job checks float
-    // to int casts too).
+    // render fuzzer under clang's UBSan, which checks float to int casts;
+    // GCC's, in the sanitizer job, does not).
     std::mt19937 random(11);
     std::vector<Box3> boxes = random_boxes(100, random);
     boxes.push_back({{-1.7e308, 0, 0}, {-1.6e308, 1, 1}});
