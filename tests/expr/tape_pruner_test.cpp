@@ -7,6 +7,7 @@
 #include <bit>
 #include <fstream>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "zeroset/expr/evaluator.hpp"
@@ -210,10 +211,37 @@ TEST(TapePruner, FourLanesEvaluateAndPruneAsFourSingleBoxes) {
 
 TEST(TapePruner, FourLanesMatchSingleBoxesOnTheModels) {
     ZEROSET_SKIP_WITHOUT_MODEL("prospero.vm");
+    ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
     for (const char* name : {"prospero.vm", "bear.vm"}) {
         std::ifstream in(std::string(ZEROSET_MODELS_DIR) + "/" + name);
         expect_lanes_like_single_boxes(Tape(import_vm(in)), 1.0, 0.3, 40);
     }
+}
+
+TEST(TapePruner, ATapeWithoutValueIdsEvaluatesAlikeAndRefusesToBePrunedAgain) {
+    const Tape full(min(ball(-5, 1), ball(5, 1)) + 0.5 * var_z());
+    TapePruner pruner(full);
+    const Box3 near_left{{-6, -1, -1}, {-4, 1, 1}};
+    (void)pruner.evaluate(full, near_left);
+    Tape with_ids, without_ids;
+    const Tape& kept = pruner.simplified(with_ids, 0, TapePruner::ValueIds::Keep);
+    const Tape& dropped = pruner.simplified(without_ids, 0, TapePruner::ValueIds::Drop);
+    ASSERT_EQ(&kept, &with_ids);
+    ASSERT_EQ(&dropped, &without_ids);
+    EXPECT_TRUE(with_ids.prunable());
+    EXPECT_FALSE(without_ids.prunable());
+    EXPECT_TRUE(without_ids.operand_values().empty());
+    EXPECT_EQ(without_ids.result_value(), with_ids.result_value());
+    expect_same_inside(full, without_ids, near_left);
+    EXPECT_THROW((void)pruner.evaluate(without_ids, near_left), std::logic_error);
+    // Pruned to nothing but a constant, it stays prunable and says which.
+    const Tape constant_min(min(var_x(), Expr(5.0)));
+    TapePruner constant_pruner(constant_min);
+    (void)constant_pruner.evaluate(constant_min, Box3{{6, 0, 0}, {7, 1, 1}});
+    Tape just_five;
+    (void)constant_pruner.simplified(just_five, 0, TapePruner::ValueIds::Drop);
+    EXPECT_TRUE(just_five.clauses().empty());
+    EXPECT_EQ(just_five.result_value(), just_five.result_slot());
 }
 
 }  // namespace

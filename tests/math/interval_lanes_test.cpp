@@ -1,7 +1,8 @@
 // IntervalLanes (math/interval_lanes.hpp) against the scalar Interval code:
 // every op, in every lane, gives the same bits as the scalar op on that
 // lane's intervals, over random intervals mixed with the edge cases (0 and
-// −0, infinities, subnormals, empty intervals). This TU is compiled for the
+// −0, infinities, the largest doubles, subnormals and products that
+// underflow, empty intervals of every kind). This TU is compiled for the
 // build's baseline target; tests/expr/tape_pruner_test.cpp checks the AVX2
 // walk of the tape pruner the same way where the CPU has AVX2.
 #include <gtest/gtest.h>
@@ -21,12 +22,17 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 /// Intervals of every kind the ops branch on.
 std::vector<Interval> sample_intervals() {
-    const double edges[] = {0.0, -0.0, 1.0, -1.0, 2.5, -3.75, 1e-310, -1e-310, 1e-160, -1e-160, 1e300, -1e300, inf, -inf};
+    constexpr double max = std::numeric_limits<double>::max();
+    const double edges[] = {0.0,    -0.0,    1.0,      -1.0,     2.5,  -3.75, 1e-310, -1e-310, 1e-160,
+                            -1e-160, 1.49e-154, -1.49e-154, 1e300, -1e300, max,  -max,   inf,     -inf};
     std::vector<Interval> out;
     for (double a : edges)
         for (double b : edges)
             if (a <= b) out.push_back({a, b});
-    out.push_back(Interval::empty());
+    // Empty: NaN bounds, one NaN bound, or lo above hi.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const Interval& empty : {Interval::empty(), Interval{nan, 1.0}, Interval{-1.0, nan}, Interval{2.0, 1.0}})
+        out.push_back(empty);
     std::mt19937 random(3);
     std::uniform_real_distribution<double> u(-4.0, 4.0);
     for (int i = 0; i < 200; ++i) {
@@ -81,6 +87,14 @@ TEST(IntervalLanes, EveryOpMatchesTheScalarOpBitForBitInEveryLane) {
     expect_lanes_match("exp", [](L a, L) { return exp(a); }, [](I a, I) { return exp(a); });
     expect_lanes_match("powi", [](L a, L) { return powi(a, -3); }, [](I a, I) { return powi(a, -3); });
     expect_lanes_match("hypot", [](L a, L b) { return hypot(a, b); }, [](I a, I b) { return hypot(a, b); });
+}
+
+TEST(IntervalLanes, APointKeepsItsSignedZero) {
+    const IntervalLanes negative_zero(-0.0);
+    for (int k = 0; k < IntervalLanes::count; ++k) {
+        EXPECT_TRUE(std::signbit(negative_zero.lo[k]) && std::signbit(negative_zero.hi[k])) << k;
+    }
+    EXPECT_TRUE(std::signbit(lane_detail::splat(-0.0)[3]));
 }
 
 TEST(IntervalLanes, RoundingStepsOneUlpOutwardLikeTheScalarCode) {

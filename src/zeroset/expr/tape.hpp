@@ -51,7 +51,7 @@ public:
     /// Per clause, the values its operands are (none in a tape pruned
     /// without them, which cannot be pruned again).
     [[nodiscard]] const std::vector<ClauseOperands>& operand_values() const { return operand_values_; }
-    [[nodiscard]] bool prunable() const { return operand_values_.size() == clauses_.size(); }
+    [[nodiscard]] bool prunable() const { return operand_values_.size() == clauses_.size(); }  // true without clauses: nothing to follow
     [[nodiscard]] ValueId result_value() const { return result_value_; }
     /// True when every op is +, −, ×, neg, square or powi with n ≥ 0.
     [[nodiscard]] bool is_polynomial() const;

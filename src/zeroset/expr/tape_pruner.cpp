@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
+#include <stdexcept>
 
 namespace zeroset {
 
@@ -40,7 +40,7 @@ constexpr int lane_count<IntervalLanes> = IntervalLanes::count;
 template <class T>
 [[gnu::flatten]] T TapePruner::walk(const Tape& source, T* s) {
     constexpr int n = lane_count<T>;
-    assert(source.prunable());
+    if (!source.prunable()) throw std::logic_error("a tape made without value ids cannot be pruned again");
     source_ = &source;
     choices_made_.fill(0);
     for (const auto& [slot, value] : source.constants()) s[slot] = T(value);
@@ -186,7 +186,9 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
     for (const auto& [slot, value] : source.constants())
         if (constant_live[slot] == epoch) out.constants_.emplace_back(constant_slot[slot], value);
     out.result_slot_ = root_slot;
-    out.result_value_ = with_ids ? renumber(root) : 0;
+    // The root is the last kept clause when it is a clause's value.
+    const auto last_kept = static_cast<ValueId>(n - first - 1);
+    out.result_value_ = with_ids ? renumber(root) : (root & clause_value) ? clause_value | last_kept : renumber(root);
     out.slot_count_ = next_slot;
 }
 

@@ -244,20 +244,24 @@ private:
     /// The scene's top-level objects get POV-Ray's default texture where they give none.
     void add_top_level(const std::shared_ptr<const PovObject>& object);
 
-    /// Counts one level of nested expressions, objects or directives while it lives;
-    /// past max_nesting the scene is refused (the parser recurses).
+    /// Counts one level of nested expressions or objects — or, on a count
+    /// of their own, directives — while it lives; past max_nesting the
+    /// scene is refused (the parser recurses).
     class Nesting {
     public:
-        explicit Nesting(PovParser& parser);
-        ~Nesting() { --parser_.nesting_; }
+        enum class Kind { ExpressionOrObject, Directive };
+        explicit Nesting(PovParser& parser, Kind kind = Kind::ExpressionOrObject);
+        ~Nesting() { --depth_; }
         Nesting(const Nesting&) = delete;
         Nesting& operator=(const Nesting&) = delete;
 
     private:
         PovParser& parser_;
+        int& depth_;
     };
     static constexpr int max_nesting = 200;
     int nesting_ = 0;
+    int directive_nesting_ = 0;
 
     PovOptions options_;
     std::vector<std::unique_ptr<SourceFile>> files_;

@@ -24,11 +24,14 @@ bool opens_block(const PovToken& t) {
 
 }  // namespace
 
-PovParser::Nesting::Nesting(PovParser& parser) : parser_(parser) {
-    if (++parser_.nesting_ > max_nesting) {
-        --parser_.nesting_;
+PovParser::Nesting::Nesting(PovParser& parser, Kind kind)
+    : parser_(parser), depth_(kind == Kind::Directive ? parser.directive_nesting_ : parser.nesting_) {
+    if (++depth_ > max_nesting) {
+        --depth_;
         // Raw: peek() could run a directive, which nests again.
-        parser_.fail(parser_.peek_raw(0), "expressions, objects or directives nested more than 200 deep");
+        parser_.fail(parser_.peek_raw(0), kind == Kind::Directive
+                                              ? "directives nested more than 200 deep (a value that begins with another directive)"
+                                              : "expressions or objects nested more than 200 deep");
     }
 }
 
@@ -212,7 +215,7 @@ PovToken PovParser::skip_to(std::initializer_list<std::string_view> stop_at) {
 }
 
 void PovParser::directive(const PovToken& keyword) {
-    const Nesting nesting(*this);  // a directive met while a #declare looks ahead runs inside it
+    const Nesting nesting(*this, Nesting::Kind::Directive);  // one met while a #declare looks ahead runs inside it
     const std::string& d = keyword.text;
     if (d == "declare" || d == "local") {
         declare(keyword, d == "local");
