@@ -36,12 +36,9 @@ double brute_entry(const Box3& b, const Ray& ray, double t_max) {
     return span ? span->t0 : INFINITY;
 }
 
-TEST(Bvh, VisitsExactlyTheBoxesTheRayEnters) {
-    std::mt19937 random(5);
-    const std::vector<Box3> boxes = random_boxes(3000, random);
-    const Bvh bvh(boxes, 1);
-    EXPECT_LE(bvh.depth(), 40u);
-    for (int r = 0; r < 500; ++r) {
+/// On `rays` random rays, the traversal visits every box a ray enters.
+void expect_every_entered_box_visited(const Bvh& bvh, const std::vector<Box3>& boxes, int rays, std::mt19937& random) {
+    for (int r = 0; r < rays; ++r) {
         const Ray ray = random_ray(random);
         std::set<std::uint32_t> visited;
         bvh.traverse(ray, 0.0, INFINITY, [&](std::uint32_t i, double t_max) {
@@ -55,6 +52,14 @@ TEST(Bvh, VisitsExactlyTheBoxesTheRayEnters) {
             }
         }
     }
+}
+
+TEST(Bvh, VisitsExactlyTheBoxesTheRayEnters) {
+    std::mt19937 random(5);
+    const std::vector<Box3> boxes = random_boxes(3000, random);
+    const Bvh bvh(boxes, 1);
+    EXPECT_LE(bvh.depth(), 40u);
+    expect_every_entered_box_visited(bvh, boxes, 500, random);
 }
 
 TEST(Bvh, ShrinkingTMaxFindsTheNearestBox) {
@@ -112,20 +117,7 @@ TEST(Bvh, BoxesReachingPastEveryDoubleStillGoInTheTree) {
     boxes.push_back({{1.6e308, 0, 0}, {1.7e308, 1, 1}});
     boxes.push_back({{-INFINITY, -1, -1}, {INFINITY, 1, 1}});
     const Bvh bvh(boxes, 1);
-    for (int r = 0; r < 100; ++r) {
-        const Ray ray = random_ray(random);
-        std::set<std::uint32_t> visited;
-        bvh.traverse(ray, 0.0, INFINITY, [&](std::uint32_t i, double t_max) {
-            visited.insert(i);
-            return t_max;
-        });
-        for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-            const bool entered = brute_entry(boxes[i], ray, INFINITY) != INFINITY;
-            if (entered) {
-                EXPECT_TRUE(visited.contains(i)) << "box " << i << " missed";
-            }
-        }
-    }
+    expect_every_entered_box_visited(bvh, boxes, 100, random);
 }
 
 TEST(Bvh, EmptyInputHasNothingToVisit) {

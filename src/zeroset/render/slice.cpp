@@ -32,6 +32,11 @@ constexpr int max_depth = 16;
 /// The corners of a tile's four sub-tiles, in units of their side.
 constexpr std::array<std::pair<int, int>, 4> quadrants{{{0, 0}, {1, 0}, {0, 1}, {1, 1}}};  // more than the halvings from any task's tile (≤ 2^16 pixels) to a leaf
 
+/// The corner of sub-tile k of the tile at (x0, y0) whose sub-tiles have side `half`.
+std::pair<int, int> quadrant_corner(int x0, int y0, int half, std::size_t k) {
+    return {x0 + quadrants[k].first * half, y0 + quadrants[k].second * half};
+}
+
 void check_settings(const SliceSettings& s) {
     require_in_range(s.size, 1, max_image_side, "size");
     require_image_fits(s.size, s.size);
@@ -126,7 +131,7 @@ public:
         std::array<Box3, TapePruner::lanes> boxes;
         std::array<bool, TapePruner::lanes> in_image{};
         for (std::size_t k = 0; k < quadrants.size(); ++k) {
-            const int qx = x0 + quadrants[k].first * half, qy = y0 + quadrants[k].second * half;
+            const auto [qx, qy] = quadrant_corner(x0, y0, half, k);
             in_image[k] = qx < size_ && qy < size_;
             // A sub-tile outside the image takes the first one's box: it is skipped below.
             boxes[k] = in_image[k] ? grid_.box(qx, qy, std::min(qx + half, size_), std::min(qy + half, size_)) : boxes[0];
@@ -136,7 +141,7 @@ public:
         std::array<const Tape*, 4> below{};
         for (std::size_t k = 0; k < quadrants.size(); ++k) {
             if (!in_image[k]) continue;
-            const int qx = x0 + quadrants[k].first * half, qy = y0 + quadrants[k].second * half;
+            const auto [qx, qy] = quadrant_corner(x0, y0, half, k);
             const int lane = static_cast<int>(k);
             if (!fill_if_decided(qx, qy, std::min(qx + half, size_), std::min(qy + half, size_), f.lane(lane)))
                 below[k] = &pruner_.simplified(pruned[k], lane, half <= leaf_size ? leaf_ids : TapePruner::ValueIds::Keep);
@@ -153,9 +158,11 @@ public:
         }
         const int half = side / 2;
         const std::array<const Tape*, 4> below = split(x0, y0, side, tape, pruned_[static_cast<std::size_t>(depth)]);
-        for (std::size_t k = 0; k < quadrants.size(); ++k)
-            if (below[k])
-                descend(x0 + quadrants[k].first * half, y0 + quadrants[k].second * half, half, *below[k], depth + 1);
+        for (std::size_t k = 0; k < quadrants.size(); ++k) {
+            if (!below[k]) continue;
+            const auto [qx, qy] = quadrant_corner(x0, y0, half, k);
+            descend(qx, qy, half, *below[k], depth + 1);
+        }
     }
 
     SliceStats stats;
@@ -274,10 +281,11 @@ SliceField slice(const Tape& tape, const SliceSettings& settings) {
         std::vector<Task> below;
         const int half = side / 2;
         for (std::size_t i = 0; i < tasks.size(); ++i)
-            for (std::size_t k = 0; k < quadrants.size(); ++k)
-                if (split[i][k])
-                    below.push_back({tasks[i].x0 + quadrants[k].first * half, tasks[i].y0 + quadrants[k].second * half,
-                                     split[i][k]});
+            for (std::size_t k = 0; k < quadrants.size(); ++k) {
+                if (!split[i][k]) continue;
+                const auto [qx, qy] = quadrant_corner(tasks[i].x0, tasks[i].y0, half, k);
+                below.push_back({qx, qy, split[i][k]});
+            }
         tasks = std::move(below);
     }
     in_parallel(visitors, tasks.size(), [&](TileVisitor& visitor, std::size_t i) {
