@@ -241,6 +241,39 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
     const auto span = clip(ray, t_min, t_max);
     if (!span) return std::nullopt;
     BlobScratch& s = scratch_for(scratch);
+    const std::optional<double> hit = search(ray, *span, Query::First, s, scratch);
+    if (!hit) return std::nullopt;
+    // Inside already at the span's start: on the clip's cut when the ray came in through it.
+    BoundaryKind kind = BoundaryKind::Surface;
+    if (*hit == span->t0 && value_on_ray(s, span->t0) < 0.0)
+        kind = span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open;
+    const Hit h{*hit, surface_at(ray, *hit, kind)};
+    s.hit_blob = this;
+    s.hit_point = h.surface.local_point;
+    s.hit_components.clear();
+    for (const std::uint32_t k : s.active)  // a cylinder's parts meet at their ends: its component once
+        if (std::find(s.hit_components.begin(), s.hit_components.end(), s.kernels[k].component) == s.hit_components.end())
+            s.hit_components.push_back(s.kernels[k].component);
+    return h;
+}
+
+bool Blob::occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    const auto span = clip(ray, t_min, t_max);
+    return span && search(ray, *span, Query::Any, scratch_for(scratch), scratch).has_value();
+}
+
+std::optional<double> Blob::probe_inside(const BlobScratch& s, double ta, double tb) const {
+    // Where the strongest component comes nearest the ray, within the segment.
+    const KernelOnRay* strongest = nullptr;
+    for (const std::uint32_t i : s.active)
+        if (!strongest || s.kernels[i].peak > strongest->peak) strongest = &s.kernels[i];
+    const double a2 = dot(strongest->qd, strongest->qd);
+    const double t = a2 > 0.0 ? std::clamp(-dot(strongest->q0, strongest->qd) / a2, ta, tb) : ta;
+    if (!(t >= ta && t <= tb)) return std::nullopt;  // NaN
+    return blob_field_at(settings_, s.kernels, s.active, t).value <= 0.0 ? std::optional<double>(t) : std::nullopt;
+}
+
+std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobScratch& s, TraceScratch& scratch) const {
     s.kernels.clear();
     s.events.clear();
     s.active.clear();
@@ -249,8 +282,8 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
     // before which every component has been seen: the segments before it
     // are complete and are solved at once, so the search stops at the first
     // hit without gathering what lies behind it.
-    double done = span->t0;  // the segments before it are solved
-    bool started = false;    // whether the start was checked
+    double done = span.t0;  // the segments before it are solved
+    bool started = false;   // whether the start was checked
     std::optional<double> hit;
     bool failed = false;
     const auto advance = [&](double frontier) {
@@ -262,9 +295,9 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
                 // BlobSegmentSolver's quadratic roots.)
                 if (!started && !settings_.metaball_quadratics) {
                     started = true;
-                    const double start = value_on_ray(s, span->t0);
+                    const double start = value_on_ray(s, span.t0);
                     if (start <= 0.0) {
-                        hit = span->t0;
+                        hit = span.t0;
                         return false;
                     }
                 }
@@ -272,6 +305,15 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
                     if (jumps_inside(s, done)) {  // a Gaussian entered at its cut-off and took f below 0
                         hit = done;
                         return false;
+                    }
+                    // Any point inside will do: one evaluation often finds
+                    // it where the solver would isolate the first.
+                    if (query == Query::Any && !settings_.metaball_quadratics) {
+                        ++scratch.counters.point_evaluations;
+                        if (const auto inside = probe_inside(s, done, e.t)) {
+                            hit = inside;
+                            return false;
+                        }
                     }
                     s.roots.clear();
                     if (solver.roots(s.kernels, s.active, done, e.t, true, s.roots, scratch.counters) == HitStatus::Failed) {
@@ -291,12 +333,12 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
         }
         return true;
     };
-    bvh_->traverse_in_order(ray, span->t0, span->t1, s.queue, [&](std::uint32_t i, double limit) {
-        if (i == Bvh::frontier) return advance(limit) ? span->t1 : -std::numeric_limits<double>::infinity();
+    bvh_->traverse_in_order(ray, span.t0, span.t1, s.queue, [&](std::uint32_t i, double limit) {
+        if (i == Bvh::frontier) return advance(limit) ? span.t1 : -std::numeric_limits<double>::infinity();
         on_ray(ray, i, [&](const KernelOnRay& k) {
-            if (!(k.t_out >= span->t0 && k.t_in <= span->t1)) return;
+            if (!(k.t_out >= span.t0 && k.t_in <= span.t1)) return;
             const std::size_t before = s.events.size();
-            add_events(k, span->t0, span->t1, s);
+            add_events(k, span.t0, span.t1, s);
             for (std::size_t j = before; j < s.events.size(); ++j)
                 std::push_heap(s.events.begin(), s.events.begin() + static_cast<std::ptrdiff_t>(j) + 1, later);
         });
@@ -307,19 +349,7 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
         ++scratch.counters.failed_queries;
         return std::nullopt;
     }
-    if (!hit) return std::nullopt;
-    // Inside already at the span's start: on the clip's cut when the ray came in through it.
-    BoundaryKind kind = BoundaryKind::Surface;
-    if (*hit == span->t0 && value_on_ray(s, span->t0) < 0.0)
-        kind = span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open;
-    const Hit h{*hit, surface_at(ray, *hit, kind)};
-    s.hit_blob = this;
-    s.hit_point = h.surface.local_point;
-    s.hit_components.clear();
-    for (const std::uint32_t k : s.active)  // a cylinder's parts meet at their ends: its component once
-        if (std::find(s.hit_components.begin(), s.hit_components.end(), s.kernels[k].component) == s.hit_components.end())
-            s.hit_components.push_back(s.kernels[k].component);
-    return h;
+    return hit;
 }
 
 void Blob::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {

@@ -83,6 +83,8 @@ public:
     /// Its reach within its clip; a point when they do not meet (as CsgNode's empty intersection).
     [[nodiscard]] Box3 bounds() const override { return bounds_.valid() ? bounds_ : Box3{{0, 0, 0}, {0, 0, 0}}; }
     std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
+    /// Stops at the first point found inside, not necessarily the first hit.
+    bool occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
     /// ∇f of the components in reach of the point, normalised.
     Vec3d local_normal(const SurfaceRef& surface, TraceScratch& scratch) const override;
@@ -130,6 +132,14 @@ private:
     [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part) const;
 
     BlobScratch& scratch_for(TraceScratch& scratch) const;
+    /// What a search looks for: the first hit, or any t on or in the solid.
+    enum class Query { First, Any };
+    /// The query's t in `span` (a part of the blob's clip), or nothing;
+    /// s.active holds the components in reach there.
+    std::optional<double> search(const Ray& ray, Span span, Query query, BlobScratch& s, TraceScratch& scratch) const;
+    /// A t in [ta, tb] where f ≤ 0 over s.active, if the one point tried —
+    /// the strongest component's nearest approach — is one.
+    [[nodiscard]] std::optional<double> probe_inside(const BlobScratch& s, double ta, double tb) const;
     /// The part of [t_min, t_max] within the blob's reach and its clip.
     [[nodiscard]] std::optional<Span> clip(const Ray& ray, double t_min, double t_max) const;
     /// Adds a component the ray meets to s.kernels and its events, clipped to [t_min, t_max], to s.events.
