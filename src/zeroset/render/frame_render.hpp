@@ -81,7 +81,11 @@ public:
 
 private:
     friend class Worker;
-    void report(Worker& worker);
+    /// Adds the worker's evaluations to the frame's total: after a pixel
+    /// once they pass report_interval (or a NaN or the worker's allowance
+    /// calls for it), and at a tile's end always (`flush`).
+    void report(Worker& worker, bool flush);
+    static constexpr std::uint64_t report_interval = 4096;
     void allow(Worker& worker, std::uint64_t total) const;
     void record_nan(const TraceScratch::NanRecord& nan);
     void record_non_finite(int px, int py);
