@@ -78,18 +78,23 @@ BlobScratch& Blob::scratch_for(TraceScratch& scratch) const {
 }
 
 std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay& q, Span part) const {
-    std::optional<Span> reach;
+    std::optional<ReachOnRay> reach;
     if (dot(q.qd, q.qd) > 0.0) {
         reach = reach_on_ray(q.q0, q.qd, c.reach);
-    } else if (dot(q.q0, q.q0) <= c.reach) {  // a ray along a cylinder's axis: the body's u is constant
-        reach = Span{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    } else if (const double u = dot(q.q0, q.q0); u <= c.reach) {  // a ray along a cylinder's axis: the body's u is constant
+        reach = ReachOnRay{{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}, 0.0, u};
     }
     if (!reach) return std::nullopt;
-    const double t_in = std::max(reach->t0, part.t0), t_out = std::min(reach->t1, part.t1);
+    const double t_in = std::max(reach->span.t0, part.t0), t_out = std::min(reach->span.t1, part.t1);
     if (!(t_in <= t_out)) return std::nullopt;
     KernelOnRay k{q.q0, q.qd, q.q0_error, q.qd_error, c.strength, c.blobbiness, t_in, t_out,
                   static_cast<std::uint32_t>(&c - components_.data())};
-    if (!settings_.metaball_quadratics) k.peak = kernel_upper_bound(settings_, k, t_in, t_out);
+    if (!settings_.metaball_quadratics) {
+        // The nearest approach found already serves unless a cylinder's part ends before it.
+        const bool within = reach->nearest >= t_in && reach->nearest <= t_out;
+        k.peak = within ? kernel_upper_bound_at(settings_, k, reach->nearest, reach->u_min)
+                        : kernel_upper_bound(settings_, k, t_in, t_out);
+    }
     return k;
 }
 

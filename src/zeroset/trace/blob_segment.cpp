@@ -118,7 +118,7 @@ KernelArgument kernel_argument(const KernelOnRay& k, double t_c, double tau_a, d
             {2.0 * (g_lo - 4.0 * unit_roundoff * std::abs(g_lo)), 2.0 * (g_hi + 4.0 * unit_roundoff * std::abs(g_hi))}};
 }
 
-std::optional<Span> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach) {
+std::optional<ReachOnRay> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach) {
     const double a2 = dot(qd, qd);
     if (!(a2 > 0.0)) return std::nullopt;
     const double nearest = -dot(q0, qd) / a2;
@@ -126,7 +126,7 @@ std::optional<Span> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach)
     const double u_min = dot(closest, closest);
     if (!(u_min <= reach)) return std::nullopt;
     const double half = std::sqrt((reach - u_min) / a2) * (1.0 + 1e-12) + 1e-12 * std::abs(nearest);
-    return Span{nearest - half, nearest + half};
+    return ReachOnRay{{nearest - half, nearest + half}, nearest, u_min};
 }
 
 double mapping_error(const Mat4& m, const Vec3d& v, bool point) {
@@ -152,12 +152,19 @@ double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay
     const double a2 = dot(k.qd, k.qd);
     const double nearest = a2 > 0.0 ? std::clamp(-dot(k.q0, k.qd) / a2, ta, tb) : 0.0;
     const Vec3d q = k.q0 + nearest * k.qd;
+    return kernel_upper_bound_at(settings, k, nearest, dot(q, q));
+}
+
+double kernel_upper_bound_at(const BlobSegmentSettings& settings, const KernelOnRay& k, double t, double u) {
+    if (k.strength < 0.0) return 0.0;
     // |q| a little short by what the mapping and q0 + t·qd may be off
     // (each coordinate, so √3 of it in length), then K a little high:
-    // every kernel decreases in u.
-    const double error = k.q0_error + std::abs(nearest) * k.qd_error +
-                         4.0 * unit_roundoff * (length(k.q0) + std::abs(nearest) * length(k.qd));
-    const double shortest = std::max(0.0, length(q) * (1.0 - 4.0 * unit_roundoff) - 1.7321 * error);
+    // every kernel decreases in u. (The sums of |coordinates| bound the
+    // lengths from above without a square root each.)
+    const auto norm1 = [](const Vec3d& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); };
+    const double error =
+        k.q0_error + std::abs(t) * k.qd_error + 4.0 * unit_roundoff * (norm1(k.q0) + std::abs(t) * norm1(k.qd));
+    const double shortest = std::max(0.0, std::sqrt(u) * (1.0 - 4.0 * unit_roundoff) - 1.7321 * error);
     return k.strength * kernel_value_at(settings.kernel, shortest * shortest * (1.0 - 4.0 * unit_roundoff), k.blobbiness) *
            (1.0 + 4.0 * unit_roundoff);
 }

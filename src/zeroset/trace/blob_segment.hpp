@@ -54,8 +54,14 @@ struct KernelOnRay {
 
 /// Where the ray q(t) = q0 + t·qd in a component's kernel space is within
 /// its reach, |q(t)|² ≤ reach — a hair wider, so that rounding never drops
-/// a component where it still counts — or nothing when it never is.
-std::optional<Span> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach);
+/// a component where it still counts — with its nearest approach (t and u
+/// there, as computed), or nothing when it never is.
+struct ReachOnRay {
+    Span span;
+    double nearest;
+    double u_min;
+};
+std::optional<ReachOnRay> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach);
 
 /// A bound on the rounding of each coordinate of m·v (m·(v, 1) for a point).
 double mapping_error(const Mat4& m, const Vec3d& v, bool point);
@@ -112,6 +118,9 @@ ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<
 /// approach there, with the error of mapping the ray into its space; 0 for
 /// a negative strength. Exact kernels only.
 double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay& k, double ta, double tb);
+/// The same from a point of the ray already found nearest: t and the
+/// computed u = |q0 + t·qd|² there.
+double kernel_upper_bound_at(const BlobSegmentSettings& settings, const KernelOnRay& k, double t, double u);
 
 /// An upper bound on Σ sᵢ·K(uᵢ) over [ta, tb] from the positive components'
 /// nearest approach, with the error of mapping the ray into their spaces:
