@@ -43,8 +43,9 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
         if (c.is_cylinder() && description_.metaball_quadratics)
             throw std::invalid_argument("component " + std::to_string(i + 1) +
                                         ": the quadratic pieces are for round components, not cylinders");
+        const Vec3d end = c.end.value_or(c.center), axis = end - c.center;
         components_.push_back({static_cast<std::uint32_t>(i), sphere, c.is_cylinder(), reach, c.strength, c.blobbiness,
-                               c.center, 1.0 / c.radius, c.end.value_or(c.center)});
+                               c.center, 1.0 / c.radius, end, axis, dot(axis, axis), length(axis), length(c.center)});
         boxes.push_back(m.reach_box(i, reach));
         if (!is_bounded(boxes.back()) || !std::isfinite(boxes.back().diagonal()))
             throw std::invalid_argument("component " + std::to_string(i + 1) + ": its reach is wider than a double can measure");
@@ -124,8 +125,9 @@ void Blob::on_ray(const Ray& ray, std::uint32_t i, Add&& add) const {
     // to first order (distance to the end = distance to the axis), so the
     // rounding of these bounds changes f by its square: far below the
     // segment solver's rounding radius.
-    const Vec3d w = c.end - c.center, offset = ray.origin - c.center;
-    const double s0 = dot(offset, w) / dot(w, w), sd = dot(ray.dir, w) / dot(w, w);
+    const Vec3d& w = c.axis;
+    const Vec3d offset = ray.origin - c.center;
+    const double s0 = dot(offset, w) / c.axis_square, sd = dot(ray.dir, w) / c.axis_square;
     Span start = everywhere, body = everywhere, finish = everywhere;  // where s ≤ 0, 0 ≤ s ≤ 1, s ≥ 1
     if (sd != 0.0) {
         const double at_start = -s0 / sd, at_end = (1.0 - s0) / sd;
@@ -144,8 +146,8 @@ void Blob::on_ray(const Ray& ray, std::uint32_t i, Add&& add) const {
     // times |p − a|/|w|), s·w and the difference, within 8 units of
     // (|o| + |a| + |s0|·|w|)/R — and the same for the direction.
     const MappedRay across{(offset - s0 * w) * c.inverse_radius, (ray.dir - sd * w) * c.inverse_radius,
-                           2.0 * u4 * (length(ray.origin) + length(c.center) + std::abs(s0) * length(w)) * c.inverse_radius,
-                           2.0 * u4 * (length(ray.dir) + std::abs(sd) * length(w)) * c.inverse_radius};
+                           2.0 * u4 * (length(ray.origin) + c.center_length + std::abs(s0) * c.axis_length) * c.inverse_radius,
+                           2.0 * u4 * (length(ray.dir) + std::abs(sd) * c.axis_length) * c.inverse_radius};
     // In the order the ray meets them, so that the events come sorted when they can.
     const bool forwards = sd >= 0.0;
     if (const auto k = part_on_ray(c, about_point(ray, c, forwards ? c.center : c.end), forwards ? start : finish)) add(*k);
@@ -410,8 +412,8 @@ Vec3d Blob::gradient_at(const Vec3d& p) const {
 
 Vec3d Blob::gradient_from(const Vec3d& p, const Component& c) const {
     if (c.cylinder) {  // q = (p − nearest)/R, so ∇u = 2q/R
-        const Vec3d w = c.end - c.center;
-        const Vec3d q = (p - (c.center + std::clamp(dot(p - c.center, w) / dot(w, w), 0.0, 1.0) * w)) * c.inverse_radius;
+        const Vec3d q =
+            (p - (c.center + std::clamp(dot(p - c.center, c.axis) / c.axis_square, 0.0, 1.0) * c.axis)) * c.inverse_radius;
         const double u = dot(q, q);
         if (u > c.reach) return {};
         return -(c.strength * kernel_at(settings_.kernel, u, c.blobbiness).slope * 2.0 * c.inverse_radius) * q;

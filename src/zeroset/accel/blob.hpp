@@ -111,6 +111,11 @@ private:
         Vec3d center;
         double inverse_radius;
         Vec3d end;            // a cylinder's
+        // Fixed for every ray: a cylinder's axis and the sizes its mapping error is made of.
+        Vec3d axis;           // end − center
+        double axis_square;   // |axis|²
+        double axis_length;
+        double center_length;
     };
     [[nodiscard]] const Mat4& to_kernel(const Component& c) const { return model().to_kernel(c.index); }
     /// Calls add(KernelOnRay) for the component as the ray sees it where the
