@@ -14,6 +14,8 @@ namespace zeroset {
 namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
+/// How closely extrema are placed, relative to the span.
+constexpr double extremum_tolerance = 1e-10;
 
 /// The roots of c[0] + c[1]t + c[2]t² (c[2] ≠ 0) in [t0, t1], increasing,
 /// without cancellation (Numerical Recipes §5.6). A discriminant within its
@@ -72,10 +74,15 @@ PolynomialRoots fast_polynomial_extrema(std::span<const double> c, double t0, do
     PolynomialScratch roots{};
     int count = quadratic_roots(derivatives[static_cast<std::size_t>(n - 2)].data(), t0, t1, roots.data());
     PolynomialScratch next{};
+    // These roots end monotone pieces. Placed within δ of the true one, an
+    // extremum's value is off by about ½·|p″|·δ²: at δ = 10⁻¹⁰ of the span
+    // some 10⁻²⁰ of p's variation across it, far below the rounding bound
+    // of forming p (~10⁻¹⁵ of its size) that the guarded scan allows for.
+    const double tolerance = extremum_tolerance * (t1 - t0);
     for (int j = n - 3; j >= 1; --j) {
         const std::span<const double> p(derivatives[static_cast<std::size_t>(j)].data(), static_cast<std::size_t>(n - j + 1));
         count = roots_between(p, t0, t1, std::span<const double>(roots.data(), static_cast<std::size_t>(count)),
-                              next.data(), n - j, result.evaluations);
+                              next.data(), n - j, result.evaluations, tolerance);
         std::swap(roots, next);
     }
     result.count = count;

@@ -49,7 +49,8 @@ PolynomialSample sample_polynomial(std::span<const double> p, double t) {
     return {t, value, derivative, std::abs(value) <= n2u / (1.0 - n2u) * bound};
 }
 
-double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialSample hi, int& evaluations) {
+double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialSample hi, int& evaluations,
+                     double tolerance) {
     double a = lo.t;
     double b = hi.t;
     if (const auto t = closed_form_root(p, a, b)) {
@@ -73,6 +74,10 @@ double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialS
         if (v.value == 0.0) return x;
         ((v.value < 0.0) == a_negative ? a : b) = x;
         const double step = v.value / v.derivative;
+        if (std::abs(step) <= tolerance && std::abs(step) <= 0.5 * std::abs(previous_step)) {
+            const double last = x - step;
+            return a <= last && last <= b ? last : x;
+        }
         // In the noise (the bound is pessimistic) one last Newton step helps —
         // if it lowers |p|: near a double root p′ is nearly 0 too, and the
         // step is noise divided by almost nothing.
@@ -90,7 +95,7 @@ double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialS
 }
 
 int roots_between(std::span<const double> p, double t0, double t1, std::span<const double> extrema, double* roots,
-                  int limit, int& evaluations) {
+                  int limit, int& evaluations, double tolerance) {
     int k = 0;
     PolynomialSample previous = sample_polynomial(p, t0);
     ++evaluations;
@@ -101,7 +106,7 @@ int roots_between(std::span<const double> p, double t0, double t1, std::span<con
         const PolynomialSample current = sample_polynomial(p, t);
         ++evaluations;
         if (!previous.zero && !current.zero && (previous.value < 0.0) != (current.value < 0.0)) {
-            roots[k++] = monotone_root(p, previous, current, evaluations);
+            roots[k++] = monotone_root(p, previous, current, evaluations, tolerance);
         }
         if (current.zero && !previous.zero && k < limit) roots[k++] = t;
         previous = current;

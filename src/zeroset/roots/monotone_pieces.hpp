@@ -26,15 +26,19 @@ PolynomialSample sample_polynomial(std::span<const double> p, double t);
 /// Newton step. Otherwise safeguarded Newton from the secant point, kept
 /// inside the shrinking bracket (Numerical Recipes' rtsafe). It stops, after
 /// one last Newton step (kept if it lowers |p|), when p is within its
-/// rounding-error bound of 0 or the step is within a few ulps of the point.
-/// Counts its evaluations.
-double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialSample hi, int& evaluations);
+/// rounding-error bound of 0 or the step is within a few ulps of the point
+/// — or, given a `tolerance` in t, at once after a steady step shorter than
+/// it (Newton's next error is about the square of its step: for the ends
+/// of monotone pieces, full precision costs one or two evaluations more and
+/// buys nothing). Counts its evaluations.
+double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialSample hi, int& evaluations,
+                     double tolerance = 0.0);
 
 /// The roots of p in [t0, t1] given the roots of p′ there (increasing): at
 /// most `limit` of them, increasing. A point where p is indistinguishable
 /// from 0 is a root (a double root shows up so, at p′'s root), and a run of
 /// such points is one root.
 int roots_between(std::span<const double> p, double t0, double t1, std::span<const double> extrema, double* roots,
-                  int limit, int& evaluations);
+                  int limit, int& evaluations, double tolerance = 0.0);
 
 }  // namespace zeroset
