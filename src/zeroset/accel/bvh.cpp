@@ -327,11 +327,19 @@ template <class Test>
         const auto inverse = [](double d) { return d != 0.0 ? 1.0 / d : std::copysign(1e300, d); };
         const RayInverse r{ray.origin, {inverse(ray.dir.x), inverse(ray.dir.y), inverse(ray.dir.z)}};
         const auto later = [](const QueueEntry& a, const QueueEntry& b) { return a.t_enter > b.t_enter; };
-        queue.push_back({root_span->t0, root_.index, root_.count});
-        while (!queue.empty()) {
-            std::pop_heap(queue.begin(), queue.end(), later);
-            const QueueEntry p = queue.back();
-            queue.pop_back();
+        // The nearest child of the node just opened is usually the next
+        // entry: it is taken at once, not pushed and popped, whenever no
+        // queued entry comes before it.
+        QueueEntry next{root_span->t0, root_.index, root_.count};
+        bool has_next = true;
+        while (has_next || !queue.empty()) {
+            QueueEntry p = next;
+            if (!has_next) {
+                std::pop_heap(queue.begin(), queue.end(), later);
+                p = queue.back();
+                queue.pop_back();
+            }
+            has_next = false;
             if (p.t_enter > t_max) break;  // and so is every entry after it
             t_max = visit(context, frontier, p.t_enter);
             if (t_max < t_min) return;
@@ -343,10 +351,25 @@ template <class Test>
             const Node& node = nodes_[p.index];
             double t_in[width], t_out[width];
             Test::run(node, r, t_min, t_max, t_in, t_out);
+            int nearest = -1;
             for (int c = 0; c < width; ++c) {
                 if (!(t_in[c] <= t_out[c]) || node.child[c].index == empty_slot) continue;
+                if (nearest < 0 || t_in[c] < t_in[nearest]) nearest = c;
+            }
+            for (int c = 0; c < width; ++c) {
+                if (c == nearest || !(t_in[c] <= t_out[c]) || node.child[c].index == empty_slot) continue;
                 queue.push_back({t_in[c], node.child[c].index, node.child[c].count});
                 std::push_heap(queue.begin(), queue.end(), later);
+            }
+            if (nearest >= 0) {
+                const QueueEntry child{t_in[nearest], node.child[nearest].index, node.child[nearest].count};
+                if (queue.empty() || !later(child, queue.front())) {
+                    next = child;
+                    has_next = true;
+                } else {
+                    queue.push_back(child);
+                    std::push_heap(queue.begin(), queue.end(), later);
+                }
             }
         }
     }
