@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstring>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -28,20 +29,20 @@ namespace {
 static_assert(sizeof(Vec3f) == 3 * sizeof(float), "Vec3f must be three packed floats to copy it as an array");
 
 /// Three floats a pixel from a C-contiguous array.
-void copy_triples(const float* from, std::vector<Vec3f>& to) {
+void copy_triples(const float* from, std::span<Vec3f> to) {
     for (Vec3f& v : to) {
         v = {from[0], from[1], from[2]};
         from += 3;
     }
 }
 
-py::array_t<float> rgb_array(const std::vector<Vec3f>& pixels, int width, int height) {
+py::array_t<float> rgb_array(std::span<const Vec3f> pixels, int width, int height) {
     py::array_t<float> out({height, width, 3});
     std::memcpy(out.mutable_data(), pixels.data(), pixels.size() * sizeof(Vec3f));
     return out;
 }
 
-py::array_t<float> plane_array(const std::vector<float>& values, int width, int height) {
+py::array_t<float> plane_array(std::span<const float> values, int width, int height) {
     py::array_t<float> out({height, width});
     std::memcpy(out.mutable_data(), values.data(), values.size() * sizeof(float));
     return out;

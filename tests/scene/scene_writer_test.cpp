@@ -11,7 +11,7 @@
 namespace zeroset::test {
 namespace {
 
-std::vector<Vec3f> pixels(const Scene& scene) {
+LargeBuffer<Vec3f> pixels(const Scene& scene) {
     RenderSettings settings;
     settings.width = 24;
     settings.height = 18;

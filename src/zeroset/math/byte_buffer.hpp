@@ -25,8 +25,8 @@ public:
         put<std::uint64_t>(text.size());
         bytes_.append(text);
     }
-    template <class T>
-    void put_vector(const std::vector<T>& values) {
+    template <class T, class Allocator>
+    void put_vector(const std::vector<T, Allocator>& values) {
         static_assert(std::is_trivially_copyable_v<T>);
         put<std::uint64_t>(values.size());
         bytes_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
@@ -59,11 +59,11 @@ public:
         at_ += size;
         return text;
     }
-    template <class T>
-    std::vector<T> get_vector() {
+    template <class T, class Vector = std::vector<T>>
+    Vector get_vector() {
         const auto count = get<std::uint64_t>();
         if (count > (bytes_.size() - at_) / sizeof(T)) damaged();
-        std::vector<T> values(count);
+        Vector values(count);
         std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
         at_ += count * sizeof(T);
         return values;

@@ -6,22 +6,22 @@
 
 #include <cstddef>
 #include <limits>
-#include <vector>
 
 #include "zeroset/math/vec3.hpp"
+#include "zeroset/render/large_buffer.hpp"
 
 namespace zeroset {
 
 struct Image {
     int width = 0;
     int height = 0;
-    std::vector<Vec3f> pixels;  // row-major, width·height
+    LargeBuffer<Vec3f> pixels;  // row-major, width·height
     /// Empty, or width·height entries: the distance from the eye to the
     /// pixel's nearest surface along its ray (+∞ where no sample hit)…
-    std::vector<float> depth;
+    LargeBuffer<float> depth;
     /// …and the unit normal there, in scene space, facing the eye ((0, 0, 0)
     /// where no sample hit).
-    std::vector<Vec3f> normals;
+    LargeBuffer<Vec3f> normals;
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h)) {}

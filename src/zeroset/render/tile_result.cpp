@@ -28,9 +28,9 @@ TileResult TileResult::unpack(std::string_view bytes) {
     r.work = in.get<TileWork>();
     r.pixels.width = in.get<std::int32_t>();
     r.pixels.height = in.get<std::int32_t>();
-    r.pixels.pixels = in.get_vector<Vec3f>();
-    r.pixels.depth = in.get_vector<float>();
-    r.pixels.normals = in.get_vector<Vec3f>();
+    r.pixels.pixels = in.get_vector<Vec3f, LargeBuffer<Vec3f>>();
+    r.pixels.depth = in.get_vector<float, LargeBuffer<float>>();
+    r.pixels.normals = in.get_vector<Vec3f, LargeBuffer<Vec3f>>();
     in.expect_end();
     const auto count = static_cast<std::size_t>(r.pixels.width) * static_cast<std::size_t>(r.pixels.height);
     if (r.pixels.width < 0 || r.pixels.height < 0 || r.pixels.pixels.size() != count ||
