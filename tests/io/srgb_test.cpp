@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace zeroset {
@@ -40,6 +42,27 @@ TEST(Srgb, ClampsOutOfRangeAndNonFinite) {
     EXPECT_EQ(encode_srgb8(std::numeric_limits<float>::quiet_NaN()), 0);
     EXPECT_EQ(encode_srgb8(std::numeric_limits<float>::infinity()), 255);
     EXPECT_EQ(encode_srgb8(-std::numeric_limits<float>::infinity()), 0);
+}
+
+TEST(Srgb, TheThresholdSearchAgreesWithTheFormula) {
+    // Everywhere near a code's threshold, where a slip would show, and on a
+    // sweep over all of [0, 1].
+    const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+    int checked = 0;
+    for (unsigned code = 1; code < 256; ++code) {
+        const std::uint32_t at = bits(srgb8_thresholds()[code]);
+        EXPECT_EQ(encode_srgb8_by_formula(srgb8_thresholds()[code]), code);
+        EXPECT_EQ(encode_srgb8_by_formula(std::bit_cast<float>(at - 1)), code - 1);
+        for (std::uint32_t b = at - 300; b <= at + 300 && b <= bits(1.0f); ++b, ++checked) {
+            const float f = std::bit_cast<float>(b);
+            ASSERT_EQ(encode_srgb8(f), encode_srgb8_by_formula(f)) << f;
+        }
+    }
+    for (std::uint32_t b = 0; b <= bits(1.0f); b += 1009, ++checked) {
+        const float f = std::bit_cast<float>(b);
+        ASSERT_EQ(encode_srgb8(f), encode_srgb8_by_formula(f)) << f;
+    }
+    EXPECT_GT(checked, 1000000);
 }
 
 TEST(Srgb, DecodesKnownValues) {
