@@ -17,6 +17,8 @@ namespace {
 /// The events' heap order: the earliest on top, and at equal t entries first.
 constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
 
+double largest_coordinate(const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
 bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
     return a.t > b.t || (a.t == b.t && a.kind > b.kind);
 }
@@ -45,7 +47,8 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
                                         ": the quadratic pieces are for round components, not cylinders");
         const Vec3d end = c.end.value_or(c.center), axis = end - c.center;
         components_.push_back({static_cast<std::uint32_t>(i), sphere, c.is_cylinder(), reach, c.strength, c.blobbiness,
-                               c.center, 1.0 / c.radius, end, axis, dot(axis, axis), length(axis), length(c.center)});
+                               c.center, 1.0 / c.radius, end, axis, dot(axis, axis), length(axis), length(c.center),
+                               largest_coordinate(c.center), largest_coordinate(end)});
         boxes.push_back(m.reach_box(i, reach));
         if (!is_bounded(boxes.back()) || !std::isfinite(boxes.back().diagonal()))
             throw std::invalid_argument("component " + std::to_string(i + 1) + ": its reach is wider than a double can measure");
@@ -99,19 +102,24 @@ std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay
     return k;
 }
 
-Blob::MappedRay Blob::about_point(const Ray& ray, const Component& c, const Vec3d& center) const {
-    const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
-    return {(ray.origin - center) * c.inverse_radius, ray.dir * c.inverse_radius,
-            u4 * (largest(ray.origin) + largest(center)) * c.inverse_radius, u4 * largest(ray.dir) * c.inverse_radius};
+Blob::RaySizes::RaySizes(const Ray& r)
+    : ray(r), origin_length(length(r.origin)), dir_length(length(r.dir)), origin_largest(largest_coordinate(r.origin)),
+      dir_largest(largest_coordinate(r.dir)) {}
+
+Blob::MappedRay Blob::about_point(const RaySizes& sizes, const Component& c, const Vec3d& point, double point_largest) {
+    const Ray& ray = sizes.ray;
+    return {(ray.origin - point) * c.inverse_radius, ray.dir * c.inverse_radius,
+            u4 * (sizes.origin_largest + point_largest) * c.inverse_radius, u4 * sizes.dir_largest * c.inverse_radius};
 }
 
 template <class Add>
-void Blob::on_ray(const Ray& ray, std::uint32_t i, Add&& add) const {
+void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add) const {
+    const Ray& ray = sizes.ray;
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const Component& c = components_[i];
     const Span everywhere{-infinity, infinity};
     if (c.sphere) {
-        if (const auto k = part_on_ray(c, about_point(ray, c, c.center), everywhere)) add(*k);
+        if (const auto k = part_on_ray(c, about_point(sizes, c, c.center, c.center_largest), everywhere)) add(*k);
         return;
     }
     if (!c.cylinder) {
@@ -146,20 +154,23 @@ void Blob::on_ray(const Ray& ray, std::uint32_t i, Add&& add) const {
     // times |p − a|/|w|), s·w and the difference, within 8 units of
     // (|o| + |a| + |s0|·|w|)/R — and the same for the direction.
     const MappedRay across{(offset - s0 * w) * c.inverse_radius, (ray.dir - sd * w) * c.inverse_radius,
-                           2.0 * u4 * (length(ray.origin) + c.center_length + std::abs(s0) * c.axis_length) * c.inverse_radius,
-                           2.0 * u4 * (length(ray.dir) + std::abs(sd) * c.axis_length) * c.inverse_radius};
+                           2.0 * u4 * (sizes.origin_length + c.center_length + std::abs(s0) * c.axis_length) * c.inverse_radius,
+                           2.0 * u4 * (sizes.dir_length + std::abs(sd) * c.axis_length) * c.inverse_radius};
     // In the order the ray meets them, so that the events come sorted when they can.
     const bool forwards = sd >= 0.0;
-    if (const auto k = part_on_ray(c, about_point(ray, c, forwards ? c.center : c.end), forwards ? start : finish)) add(*k);
+    const auto about_start = [&] { return about_point(sizes, c, c.center, c.center_largest); };
+    const auto about_end = [&] { return about_point(sizes, c, c.end, c.end_largest); };
+    if (const auto k = part_on_ray(c, forwards ? about_start() : about_end(), forwards ? start : finish)) add(*k);
     if (const auto k = part_on_ray(c, across, body)) add(*k);
-    if (const auto k = part_on_ray(c, about_point(ray, c, forwards ? c.end : c.center), forwards ? finish : start)) add(*k);
+    if (const auto k = part_on_ray(c, forwards ? about_end() : about_start(), forwards ? finish : start)) add(*k);
 }
 
 void Blob::gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, TraceScratch& scratch) const {
     s.kernels.clear();
     s.events.clear();
+    const RaySizes sizes(ray);
     bvh_->traverse(ray, t_min, t_max, [&](std::uint32_t i, double limit) {
-        on_ray(ray, i, [&](const KernelOnRay& k) {
+        on_ray(sizes, i, [&](const KernelOnRay& k) {
             if (k.t_out >= t_min && k.t_in <= t_max) add_events(k, t_min, t_max, s);
         });
         return limit;  // every component along the ray: the events need them all
@@ -340,9 +351,10 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
         }
         return true;
     };
+    const RaySizes sizes(ray);
     bvh_->traverse_in_order(ray, span.t0, span.t1, s.queue, [&](std::uint32_t i, double limit) {
         if (i == Bvh::frontier) return advance(limit) ? span.t1 : -std::numeric_limits<double>::infinity();
-        on_ray(ray, i, [&](const KernelOnRay& k) {
+        on_ray(sizes, i, [&](const KernelOnRay& k) {
             if (!(k.t_out >= span.t0 && k.t_in <= span.t1)) return;
             const std::size_t before = s.events.size();
             add_events(k, span.t0, span.t1, s);

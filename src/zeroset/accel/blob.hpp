@@ -116,6 +116,16 @@ private:
         double axis_square;   // |axis|²
         double axis_length;
         double center_length;
+        double center_largest;  // the largest |coordinate| of center, and of end
+        double end_largest;
+    };
+    /// The ray with the sizes every component's mapping error is made of,
+    /// worked out once a query.
+    struct RaySizes {
+        const Ray& ray;
+        double origin_length, dir_length;
+        double origin_largest, dir_largest;  // largest |coordinate|
+        explicit RaySizes(const Ray& r);
     };
     [[nodiscard]] const Mat4& to_kernel(const Component& c) const { return model().to_kernel(c.index); }
     /// Calls add(KernelOnRay) for the component as the ray sees it where the
@@ -124,15 +134,17 @@ private:
     /// kernel of the distance to the segment is, piece by piece along the
     /// ray, the kernel of a distance to a point or to the axis line).
     template <class Add>
-    void on_ray(const Ray& ray, std::uint32_t i, Add&& add) const;
+    void on_ray(const RaySizes& ray, std::uint32_t i, Add&& add) const;
     /// The ray in a kernel's space, q(t) = q0 + t·qd, with bounds on the
     /// rounding of each coordinate.
     struct MappedRay {
         Vec3d q0, qd;
         double q0_error, qd_error;
     };
-    /// The ray about a point: q = (p − center)/R.
-    [[nodiscard]] MappedRay about_point(const Ray& ray, const Component& c, const Vec3d& center) const;
+    /// The ray about a point (a component's centre or end, whose largest
+    /// |coordinate| is given): q = (p − point)/R.
+    [[nodiscard]] static MappedRay about_point(const RaySizes& ray, const Component& c, const Vec3d& point,
+                                               double point_largest);
     /// The component's kernel along the mapped ray, within reach and the span `part`.
     [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part) const;
 
