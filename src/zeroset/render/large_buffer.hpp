@@ -22,6 +22,7 @@ namespace zeroset {
 
 template <class T>
 struct LargeBufferAllocator {
+    static_assert(alignof(T) <= alignof(std::max_align_t), "small buffers come from malloc, aligned for max_align_t only");
     using value_type = T;
     static constexpr std::size_t huge_page = std::size_t{2} << 20;
 
