@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "zeroset/roots/fast_polynomial.hpp"
@@ -166,6 +167,51 @@ TEST(MonotoneRoot, ATolerancePlacesTheRootWithinItForFewerEvaluations) {
         EXPECT_NEAR(close, r, 1e-10 * 3.0) << r;
     }
     EXPECT_LT(tolerant, full);
+}
+
+TEST(PolynomialEnclosure, APositiveSpanIsProvenByItsBernsteinCoefficients) {
+    const std::vector<double> radius{1e-11, 0.0, 0.0};
+    // (t − 1)² + depth: on [0, 3] the Bernstein coefficients are 1 + d,
+    // d − 2, 4 + d, so a dip 3 deep is proven and one 0.5 deep is not (false
+    // proves nothing); near the dip's bottom they tighten to its depth.
+    EXPECT_TRUE(provably_positive({dip(3.0), radius}, 0.0, 3.0));
+    EXPECT_FALSE(provably_positive({dip(0.5), radius}, 0.0, 3.0));
+    EXPECT_TRUE(provably_positive({dip(1e-9), radius}, 1.0 - 1e-5, 1.0 + 1e-5));
+    // A dip shallower than the radius is never proven, nor is a crossing.
+    EXPECT_FALSE(provably_positive({dip(1e-12), radius}, 1.0 - 1e-7, 1.0 + 1e-7));
+    EXPECT_FALSE(provably_positive({dip(-0.25), radius}, 0.0, 3.0));
+    // A span that stops short of the roots 0.5 and 1.5 is proven.
+    EXPECT_TRUE(provably_positive({dip(-0.25), radius}, -2.0, 0.4));
+}
+
+TEST(PolynomialEnclosure, WhatIsProvenPositiveHasNoPossibleRoot) {
+    // Random quartics about 0, their spans, and a radius: wherever the
+    // Bernstein test says F > 0, the guarded scan finds no possible root
+    // and F̂ stays above the bound at a fine sampling.
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> coefficient(-1.0, 1.0);
+    std::uniform_real_distribution<double> half_width(0.1, 3.0);
+    int proven = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        std::vector<double> value(5);
+        for (double& c : value) c = coefficient(random);
+        value[0] = std::abs(value[0]) + 0.01;  // outside at the centre
+        const std::vector<double> radius{1e-3 * std::abs(coefficient(random)), 0.0, 0.0, 0.0, 0.0};
+        const double s0 = -half_width(random), s1 = half_width(random);
+        if (!provably_positive({value, radius}, s0, s1)) continue;
+        ++proven;
+        std::array<double, 4> extrema{};
+        const PolynomialRoots e = fast_polynomial_extrema(value, s0, s1, extrema);
+        EXPECT_FALSE(first_possible_root({value, radius}, s0, s1,
+                                         std::span<const double>(extrema.data(), static_cast<std::size_t>(e.count)), false)
+                         .found);
+        for (int i = 0; i <= 1000; ++i) {
+            const double s = s0 + (s1 - s0) * i / 1000.0;
+            ASSERT_GT(horner(value, s).value, enclosure_bound({value, radius}, s)) << "trial " << trial << ", s = " << s;
+        }
+    }
+    EXPECT_GT(proven, 200);  // the test is exercised
+    EXPECT_LT(proven, 4000);
 }
 
 }  // namespace

@@ -23,19 +23,24 @@ constexpr auto binomials = [] {
     return b;
 }();
 
-}  // namespace
-
-PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, double t1, double& magnitude) {
-    // Taylor shift to t0 (repeated synthetic division), then scale by t1 − t0;
-    // the same on |cᵢ| and |t0| gives the scale of each result's rounding.
-    PolynomialScratch a{};
-    PolynomialScratch abs_a{};
-    std::copy(p.begin(), p.end(), a.begin());
-    for (int i = 0; i <= n; ++i) abs_a[at(i)] = std::abs(a[at(i)]);
+/// The conversion of a degree-n polynomial in arrays of `Capacity`: a
+/// Taylor shift to t0 (repeated synthetic division), a scaling by t1 − t0
+/// and the binomial weights C(k, i)/C(n, i). The same on |cᵢ| and |t0|
+/// gives the scale of each result's rounding. Inlined with a constant n the
+/// loops unroll and the weights fold.
+template <std::size_t Capacity>
+[[gnu::always_inline]] inline void convert(const double* p, int n, double t0, double t1, double* b, double& magnitude) {
+    std::array<double, Capacity> a;
+    std::array<double, Capacity> abs_a;
+    for (int i = 0; i <= n; ++i) {
+        a[at(i)] = p[i];
+        abs_a[at(i)] = std::abs(p[i]);
+    }
+    const double abs_t0 = std::abs(t0);
     for (int i = 0; i < n; ++i) {
         for (int j = n - 1; j >= i; --j) {
             a[at(j)] += t0 * a[at(j + 1)];
-            abs_a[at(j)] += std::abs(t0) * abs_a[at(j + 1)];
+            abs_a[at(j)] += abs_t0 * abs_a[at(j + 1)];
         }
     }
     double scale = 1.0;
@@ -43,7 +48,6 @@ PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, doub
         a[at(i)] *= scale;
         abs_a[at(i)] *= scale;
     }
-    PolynomialScratch b{};
     magnitude = 0.0;
     for (int k = 0; k <= n; ++k) {
         double sum = 0.0;
@@ -53,9 +57,31 @@ PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, doub
             sum += weight * a[at(i)];
             abs_sum += weight * abs_a[at(i)];
         }
-        b[at(k)] = sum;
+        b[k] = sum;
         magnitude = std::max(magnitude, abs_sum);
     }
+}
+
+template <int N>
+void convert_fixed(const double* p, double t0, double t1, double* b, double& magnitude) {
+    convert<N + 1>(p, N, t0, t1, b, magnitude);
+}
+
+/// Degrees 1 to 8 (the ray polynomials of most surfaces) unrolled.
+using FixedConversion = void (*)(const double*, double, double, double*, double&);
+constexpr std::array<FixedConversion, 9> fixed_conversions = {
+    nullptr,         convert_fixed<1>, convert_fixed<2>, convert_fixed<3>, convert_fixed<4>,
+    convert_fixed<5>, convert_fixed<6>, convert_fixed<7>, convert_fixed<8>,
+};
+
+}  // namespace
+
+PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, double t1, double& magnitude) {
+    PolynomialScratch b{};
+    if (n >= 1 && n < static_cast<int>(fixed_conversions.size()))
+        fixed_conversions[at(n)](p.data(), t0, t1, b.data(), magnitude);
+    else
+        convert<max_polynomial_degree + 1>(p.data(), n, t0, t1, b.data(), magnitude);
     return b;
 }
 

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "zeroset/roots/bernstein.hpp"
 #include "zeroset/roots/monotone_pieces.hpp"
 #include "zeroset/roots/polynomial_roots.hpp"
 
@@ -52,6 +53,14 @@ double enclosure_bound(PolynomialEnclosure f, double t) {
     const double n = static_cast<double>(std::max(f.value.size(), f.radius.size()));
     const double horner = 2.0 * n * u / (1.0 - 2.0 * n * u);
     return (radius + horner * magnitude) * (1.0 + horner);
+}
+
+bool provably_positive(PolynomialEnclosure f, double t0, double t1) {
+    const int n = static_cast<int>(f.value.size()) - 1;
+    double magnitude = 0.0;
+    const PolynomialScratch b = to_bernstein(f.value, n, t0, t1, magnitude);
+    const double noise = bernstein_noise(n, magnitude) + enclosure_bound(f, std::max(-t0, t1));
+    return std::all_of(b.begin(), b.begin() + n + 1, [noise](double c) { return c > noise; });
 }
 
 PossibleRoot first_possible_root(PolynomialEnclosure f, double t0, double t1, std::span<const double> extrema,

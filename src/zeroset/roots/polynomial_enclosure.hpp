@@ -40,6 +40,13 @@ struct PossibleRoot {
 /// §5.1: γ₂ₙ·Σ|ĉ_i||t|^i), rounded up: |F(t) − horner(F̂, t)| ≤ this.
 double enclosure_bound(PolynomialEnclosure f, double t);
 
+/// True when F > 0 throughout [t0, t1], shown by F̂'s Bernstein coefficients
+/// on it (bernstein.hpp) all exceeding the conversion's rounding plus R at
+/// the end farther from 0 (R grows with |t|). A cheap test before the
+/// extrema are found: most spans a ray's bounds hand over hold no root.
+/// False proves nothing.
+bool provably_positive(PolynomialEnclosure f, double t0, double t1);
+
 /// The first t in [t0, t1] where F may vanish, given the extrema of F̂ in
 /// [t0, t1] (the roots of F̂′, increasing). When `t1_is_root`, t1 is a root
 /// of F̂ already found (by any solver) and the scan only checks the pieces

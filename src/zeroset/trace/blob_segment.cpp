@@ -9,7 +9,6 @@
 #include <limits>
 
 #include "zeroset/math/interval.hpp"
-#include "zeroset/roots/bernstein.hpp"
 #include "zeroset/roots/closed_form.hpp"
 #include "zeroset/roots/fast_polynomial.hpp"
 #include "zeroset/roots/polynomial_enclosure.hpp"
@@ -280,13 +279,8 @@ HitStatus BlobSegmentSolver::polynomial_roots(std::span<const KernelOnRay> kerne
         if (!std::isfinite(value[static_cast<std::size_t>(j)])) return HitStatus::Failed;
     const std::span<const double> f(value.data(), static_cast<std::size_t>(n));
     const PolynomialEnclosure enclosure{f, std::span<const double>(radius.data(), static_cast<std::size_t>(n))};
-    // Most segments that get here hold no root: when f's Bernstein
-    // coefficients on the segment all stay above its rounding radius (largest
-    // at the end farther from the middle) and the conversion's, f > 0 on it.
-    double magnitude = 0.0;
-    const PolynomialScratch b = to_bernstein(f, n - 1, s0, s1, magnitude);
-    const double noise = bernstein_noise(n - 1, magnitude) + enclosure_bound(enclosure, std::max(-s0, s1));
-    if (std::all_of(b.begin(), b.begin() + n, [noise](double c) { return c > noise; })) return HitStatus::NoHit;
+    // Most segments that get here hold no root.
+    if (provably_positive(enclosure, s0, s1)) return HitStatus::NoHit;
     std::array<double, max_degree> extrema{};
     const PolynomialRoots e = fast_polynomial_extrema(f, s0, s1, extrema);
     counters.point_evaluations += static_cast<std::uint64_t>(e.evaluations);

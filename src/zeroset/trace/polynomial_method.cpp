@@ -103,6 +103,9 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
     }
 
     const PolynomialEnclosure enclosure = current_enclosure();
+    // Most spans hold no root (rays that pass the surface by within its
+    // bounds): the Bernstein test settles them before any extremum is found.
+    if (provably_positive(enclosure, c.s0, c.s1)) return {std::nullopt, HitStatus::NoHit};
 
     // F̂'s extrema up to its first root: the fast solver finds them on its way
     // to the roots; any other solver finds the first root, then the extrema
@@ -154,10 +157,12 @@ HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<doub
         // Guarded as the first hit is: F̂'s roots, and its extrema that come
         // within the rounding bound of 0 — so that spans built from these
         // hits (Roth CSG) miss no graze either.
+        const PolynomialEnclosure enclosure = current_enclosure();
+        if (provably_positive(enclosure, c.s0, c.s1)) return HitStatus::NoHit;
         std::array<double, RayPolynomialProgram::max_degree> extrema{};
         const int extremum_count = extrema_of(value, c.s0, c.s1, extrema, counters);
         int evaluations = 0;
-        count = possible_roots(current_enclosure(), c.s0, c.s1,
+        count = possible_roots(enclosure, c.s0, c.s1,
                                std::span<const double>(extrema.data(), static_cast<std::size_t>(extremum_count)), roots,
                                evaluations);
         counters.point_evaluations += static_cast<std::uint64_t>(evaluations);

@@ -1,0 +1,77 @@
+// The conversion to the Bernstein basis (roots/bernstein.hpp): its
+// coefficients reproduce the polynomial, within the rounding bound it
+// states, on the unrolled degrees (1 to 8) and the general loop alike.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "zeroset/roots/bernstein.hpp"
+
+namespace zeroset {
+namespace {
+
+/// The Bernstein form's value at u in [0, 1], by de Casteljau in long double.
+long double de_casteljau(const PolynomialScratch& b, int n, long double u) {
+    std::array<long double, max_polynomial_degree + 1> c{};
+    for (int i = 0; i <= n; ++i) c[static_cast<std::size_t>(i)] = b[static_cast<std::size_t>(i)];
+    for (int r = 1; r <= n; ++r)
+        for (int i = 0; i <= n - r; ++i)
+            c[static_cast<std::size_t>(i)] = (1 - u) * c[static_cast<std::size_t>(i)] + u * c[static_cast<std::size_t>(i) + 1];
+    return c[0];
+}
+
+/// The exact Bernstein coefficients of p on [t0, t1], near enough: the same
+/// conversion in long double (11 more bits than the result's rounding).
+std::vector<long double> reference_bernstein(const std::vector<double>& p, int n, long double t0, long double t1) {
+    std::vector<long double> a(p.begin(), p.end());
+    for (int i = 0; i < n; ++i)
+        for (int j = n - 1; j >= i; --j) a[static_cast<std::size_t>(j)] += t0 * a[static_cast<std::size_t>(j) + 1];
+    long double scale = 1;
+    for (int i = 0; i <= n; ++i, scale *= t1 - t0) a[static_cast<std::size_t>(i)] *= scale;
+    std::vector<long double> b(a.size(), 0);
+    const auto choose = [](int m, int k) {
+        long double c = 1;
+        for (int i = 1; i <= k; ++i) c = c * (m - k + i) / i;
+        return c;
+    };
+    for (int k = 0; k <= n; ++k)
+        for (int i = 0; i <= k; ++i) b[static_cast<std::size_t>(k)] += choose(k, i) / choose(n, i) * a[static_cast<std::size_t>(i)];
+    return b;
+}
+
+TEST(Bernstein, TheCoefficientsAreThePolynomialsWithinTheirStatedRounding) {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> coefficient(-3.0, 3.0);
+    std::uniform_real_distribution<double> end(-4.0, 4.0);
+    for (int n = 0; n <= 12; ++n) {  // 1–8 unrolled, 0 and 9–12 by the loop
+        for (int trial = 0; trial < 200; ++trial) {
+            std::vector<double> p(static_cast<std::size_t>(n) + 1);
+            for (double& c : p) c = coefficient(random);
+            double t0 = end(random), t1 = end(random);
+            if (t0 > t1) std::swap(t0, t1);
+            double magnitude = 0.0;
+            const PolynomialScratch b = to_bernstein(p, n, t0, t1, magnitude);
+            const double noise = bernstein_noise(n, magnitude);
+            const std::vector<long double> exact = reference_bernstein(p, n, t0, t1);
+            for (int k = 0; k <= n; ++k) {
+                const long double error = std::fabs(static_cast<long double>(b[static_cast<std::size_t>(k)]) -
+                                                    exact[static_cast<std::size_t>(k)]);
+                ASSERT_LE(error, noise) << "degree " << n << ", coefficient " << k;
+            }
+            // The Bernstein form is the polynomial: compare at a few points.
+            for (const long double u : {0.0L, 0.3L, 0.5L, 0.9L, 1.0L}) {
+                const long double t = t0 + u * (static_cast<long double>(t1) - t0);
+                long double value = 0;
+                for (int i = n; i >= 0; --i) value = value * t + p[static_cast<std::size_t>(i)];
+                EXPECT_NEAR(static_cast<double>(de_casteljau(b, n, u)), static_cast<double>(value), 4.0 * noise + 1e-300)
+                    << "degree " << n << " at u = " << static_cast<double>(u);
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace zeroset
