@@ -17,6 +17,23 @@ namespace zeroset {
 /// the scale of the conversion's rounding.
 PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, double t1, double& magnitude);
 
+/// Splits the Bernstein coefficients b[0..n] of a piece at its middle into
+/// those of its halves (de Casteljau); `left` and `right` may not overlap b.
+/// Each result is at most n roundings of averages of coefficients: a split
+/// adds at most n·ε/2·max|b| to their error.
+inline void split_bernstein(const double* b, int n, double* left, double* right) {
+    PolynomialScratch w;
+    for (int i = 0; i <= n; ++i) w[static_cast<std::size_t>(i)] = b[i];
+    left[0] = w[0];
+    right[n] = w[static_cast<std::size_t>(n)];
+    for (int r = 1; r <= n; ++r) {
+        for (int i = 0; i <= n - r; ++i)
+            w[static_cast<std::size_t>(i)] = 0.5 * (w[static_cast<std::size_t>(i)] + w[static_cast<std::size_t>(i) + 1]);
+        left[r] = w[0];
+        right[n - r] = w[static_cast<std::size_t>(n - r)];
+    }
+}
+
 /// A bound on the conversion's rounding error in each coefficient: n + 1
 /// roundings of terms up to `magnitude`.
 inline double bernstein_noise(int n, double magnitude) {

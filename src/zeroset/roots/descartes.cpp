@@ -21,18 +21,6 @@ struct Piece {
     PolynomialScratch bernstein;
 };
 
-/// Splits the Bernstein coefficients of one piece at its middle (de Casteljau).
-void subdivide(const PolynomialScratch& b, int n, PolynomialScratch& left, PolynomialScratch& right) {
-    PolynomialScratch w = b;
-    left[0] = w[0];
-    right[at(n)] = w[at(n)];
-    for (int r = 1; r <= n; ++r) {
-        for (int i = 0; i <= n - r; ++i) w[at(i)] = 0.5 * (w[at(i)] + w[at(i + 1)]);
-        left[at(r)] = w[0];
-        right[at(n - r)] = w[at(n - r)];
-    }
-}
-
 enum class Verdict { NoRoot, OneRoot, Zero, Split };
 
 /// What Descartes' rule says of a piece, coefficients within `noise` of 0
@@ -122,7 +110,7 @@ PolynomialRoots descartes_roots(std::span<const double> c, double t0, double t1,
                 stack[top + 1].b = m;
                 stack[top].a = m;
                 stack[top].b = piece.b;
-                subdivide(piece.bernstein, n, stack[top + 1].bernstein, stack[top].bernstein);
+                split_bernstein(piece.bernstein.data(), n, stack[top + 1].bernstein.data(), stack[top].bernstein.data());
                 top += 2;
                 break;
         }

@@ -13,6 +13,7 @@
 #include "zeroset/roots/fast_polynomial.hpp"
 #include "zeroset/roots/polynomial_enclosure.hpp"
 #include "zeroset/roots/refine.hpp"
+#include "zeroset/roots/subdivided_first_root.hpp"
 #include "zeroset/trace/segment_stack.hpp"
 
 namespace zeroset {
@@ -279,20 +280,20 @@ HitStatus BlobSegmentSolver::polynomial_roots(std::span<const KernelOnRay> kerne
         if (!std::isfinite(value[static_cast<std::size_t>(j)])) return HitStatus::Failed;
     const std::span<const double> f(value.data(), static_cast<std::size_t>(n));
     const PolynomialEnclosure enclosure{f, std::span<const double>(radius.data(), static_cast<std::size_t>(n))};
+    const auto at = [&](double s) { return std::clamp(t_c + s, ta, tb); };
+    if (first_only) {  // as the polynomial method's first hit
+        const PossibleRoot r = first_possible_root_subdividing(enclosure, s0, s1);
+        counters.point_evaluations += static_cast<std::uint64_t>(r.evaluations);
+        if (!r.found) return HitStatus::NoHit;
+        roots.push_back(at(r.t));
+        return HitStatus::Ok;
+    }
     // Most segments that get here hold no root.
     if (provably_positive(enclosure, s0, s1)) return HitStatus::NoHit;
     std::array<double, max_degree> extrema{};
     const PolynomialRoots e = fast_polynomial_extrema(f, s0, s1, extrema);
     counters.point_evaluations += static_cast<std::uint64_t>(e.evaluations);
     const std::span<const double> turns(extrema.data(), static_cast<std::size_t>(e.count));
-    const auto at = [&](double s) { return std::clamp(t_c + s, ta, tb); };
-    if (first_only) {
-        const PossibleRoot r = first_possible_root(enclosure, s0, s1, turns, false);
-        counters.point_evaluations += static_cast<std::uint64_t>(r.evaluations);
-        if (!r.found) return HitStatus::NoHit;
-        roots.push_back(at(r.t));
-        return HitStatus::Ok;
-    }
     std::array<double, 2 * max_degree + 2> found{};
     int evaluations = 0;
     const int count = possible_roots(enclosure, s0, s1, turns, found, evaluations);

@@ -15,6 +15,7 @@
 #include "zeroset/roots/laguerre.hpp"
 #include "zeroset/roots/polynomial_enclosure.hpp"
 #include "zeroset/roots/sturm.hpp"
+#include "zeroset/roots/subdivided_first_root.hpp"
 
 namespace zeroset {
 
@@ -103,30 +104,30 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
     }
 
     const PolynomialEnclosure enclosure = current_enclosure();
-    // Most spans hold no root (rays that pass the surface by within its
-    // bounds): the Bernstein test settles them before any extremum is found.
-    if (provably_positive(enclosure, c.s0, c.s1)) return {std::nullopt, HitStatus::NoHit};
+    const auto answer = [&](const PossibleRoot& hit) {
+        counters.point_evaluations += static_cast<std::uint64_t>(hit.evaluations);
+        return hit.found ? hit_at(hit.t) : HitResult{std::nullopt, HitStatus::NoHit};
+    };
+    // The default solver: Bernstein subdivision settles misses and simple
+    // crossings, and scans what it leaves undecided over the fast solver's
+    // extrema (subdivided_first_root.hpp).
+    if (settings_.polynomial_solver == PolynomialSolver::Fast)
+        return answer(first_possible_root_subdividing(enclosure, c.s0, c.s1));
 
-    // F̂'s extrema up to its first root: the fast solver finds them on its way
-    // to the roots; any other solver finds the first root, then the extrema
-    // before it as the roots of F̂′. A root where F̂ is plainly not 0 (a
-    // cluster's midpoint, an inaccurate closed form) is not trusted: the
-    // extrema then cover the whole span, and the scan finds the root.
+    // Any other solver: most spans hold no root (rays that pass the surface
+    // by within its bounds), which the Bernstein test settles at once. Else
+    // the solver's first root, then F̂'s extrema before it as the roots of
+    // F̂′. A root where F̂ is plainly not 0 (a cluster's midpoint, an
+    // inaccurate closed form) is not trusted: the extrema then cover the
+    // whole span, and the scan finds the root.
+    if (provably_positive(enclosure, c.s0, c.s1)) return {std::nullopt, HitStatus::NoHit};
+    std::optional<double> root = solve_first(c.s1);
+    if (root && std::abs(horner(value, *root).value) > enclosure_bound(enclosure, *root)) root.reset();
     std::array<double, RayPolynomialProgram::max_degree> extrema{};
-    int extremum_count = 0;
-    std::optional<double> root;
-    if (settings_.polynomial_solver != PolynomialSolver::Fast) {
-        root = solve_first(c.s1);
-        if (root && std::abs(horner(value, *root).value) > enclosure_bound(enclosure, *root)) root.reset();
-    }
-    extremum_count = extrema_of(value, c.s0, root.value_or(c.s1), extrema, counters);
-    const PossibleRoot hit =
-        first_possible_root(enclosure, c.s0, root.value_or(c.s1),
-                            std::span<const double>(extrema.data(), static_cast<std::size_t>(extremum_count)),
-                            root.has_value());
-    counters.point_evaluations += static_cast<std::uint64_t>(hit.evaluations);
-    if (!hit.found) return {std::nullopt, HitStatus::NoHit};
-    return hit_at(hit.t);
+    const int extremum_count = extrema_of(value, c.s0, root.value_or(c.s1), extrema, counters);
+    return answer(first_possible_root(enclosure, c.s0, root.value_or(c.s1),
+                                      std::span<const double>(extrema.data(), static_cast<std::size_t>(extremum_count)),
+                                      root.has_value()));
 }
 
 double PolynomialMethod::rounding_bound(const Ray& ray, Span span) {
