@@ -43,15 +43,33 @@ double first_within(std::span<const double> p, PolynomialSample a, PolynomialSam
 
 }  // namespace
 
+namespace {
+/// γ₂ₙ = 2nu/(1 − 2nu) for n coefficients, found once.
+constexpr auto horner_gammas = [] {
+    constexpr double u = std::numeric_limits<double>::epsilon() / 2.0;
+    std::array<double, max_polynomial_degree + 2> g{};
+    for (std::size_t n = 0; n < g.size(); ++n) g[n] = 2.0 * static_cast<double>(n) * u / (1.0 - 2.0 * static_cast<double>(n) * u);
+    return g;
+}();
+}  // namespace
+
 double enclosure_bound(PolynomialEnclosure f, double t) {
     const double x = std::abs(t);
     double radius = 0.0;
-    for (std::size_t i = f.radius.size(); i-- > 0;) radius = radius * x + f.radius[i];
     double magnitude = 0.0;
-    for (std::size_t i = f.value.size(); i-- > 0;) magnitude = magnitude * x + std::abs(f.value[i]);
+    if (f.radius.size() == f.value.size()) {  // as every caller has them: one pass
+        for (std::size_t i = f.value.size(); i-- > 0;) {
+            radius = radius * x + f.radius[i];
+            magnitude = magnitude * x + std::abs(f.value[i]);
+        }
+    } else {
+        for (std::size_t i = f.radius.size(); i-- > 0;) radius = radius * x + f.radius[i];
+        for (std::size_t i = f.value.size(); i-- > 0;) magnitude = magnitude * x + std::abs(f.value[i]);
+    }
+    const std::size_t n = std::max(f.value.size(), f.radius.size());
     constexpr double u = std::numeric_limits<double>::epsilon() / 2.0;
-    const double n = static_cast<double>(std::max(f.value.size(), f.radius.size()));
-    const double horner = 2.0 * n * u / (1.0 - 2.0 * n * u);
+    const double horner = n < horner_gammas.size() ? horner_gammas[n]
+                                                   : 2.0 * static_cast<double>(n) * u / (1.0 - 2.0 * static_cast<double>(n) * u);
     return (radius + horner * magnitude) * (1.0 + horner);
 }
 
