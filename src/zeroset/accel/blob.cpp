@@ -14,11 +14,9 @@ namespace zeroset {
 
 namespace {
 
-/// The events' heap order: the earliest on top, and at equal t entries first.
 constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
 
-double largest_coordinate(const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
-
+/// The events' heap order: the earliest on top, and at equal t entries first.
 bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
     return a.t > b.t || (a.t == b.t && a.kind > b.kind);
 }
@@ -48,7 +46,7 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
         const Vec3d end = c.end.value_or(c.center), axis = end - c.center;
         components_.push_back({static_cast<std::uint32_t>(i), sphere, c.is_cylinder(), reach, c.strength, c.blobbiness,
                                c.center, 1.0 / c.radius, end, axis, dot(axis, axis), length(axis), length(c.center),
-                               largest_coordinate(c.center), largest_coordinate(end)});
+                               max_abs(c.center), max_abs(end)});
         boxes.push_back(m.reach_box(i, reach));
         if (!is_bounded(boxes.back()) || !std::isfinite(boxes.back().diagonal()))
             throw std::invalid_argument("component " + std::to_string(i + 1) + ": its reach is wider than a double can measure");
@@ -93,6 +91,7 @@ std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay
     if (!(t_in <= t_out)) return std::nullopt;
     KernelOnRay k{q.q0, q.qd, q.q0_error, q.qd_error, c.strength, c.blobbiness, t_in, t_out,
                   static_cast<std::uint32_t>(&c - components_.data())};
+    if (dot(q.qd, q.qd) > 0.0) k.nearest = reach->nearest;
     if (!settings_.metaball_quadratics) {
         // The nearest approach found already serves unless a cylinder's part ends before it.
         const bool within = reach->nearest >= t_in && reach->nearest <= t_out;
@@ -103,8 +102,8 @@ std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay
 }
 
 Blob::RaySizes::RaySizes(const Ray& r)
-    : ray(r), origin_length(length(r.origin)), dir_length(length(r.dir)), origin_largest(largest_coordinate(r.origin)),
-      dir_largest(largest_coordinate(r.dir)) {}
+    : ray(r), origin_length(length(r.origin)), dir_length(length(r.dir)), origin_largest(max_abs(r.origin)),
+      dir_largest(max_abs(r.dir)) {}
 
 Blob::MappedRay Blob::about_point(const RaySizes& sizes, const Component& c, const Vec3d& point, double point_largest) {
     const Ray& ray = sizes.ray;
@@ -285,8 +284,7 @@ std::optional<double> Blob::probe_inside(const BlobScratch& s, double ta, double
     const KernelOnRay* strongest = nullptr;
     for (const std::uint32_t i : s.active)
         if (!strongest || s.kernels[i].peak > strongest->peak) strongest = &s.kernels[i];
-    const double a2 = dot(strongest->qd, strongest->qd);
-    const double t = a2 > 0.0 ? std::clamp(-dot(strongest->q0, strongest->qd) / a2, ta, tb) : ta;
+    const double t = std::clamp(strongest->nearest, ta, tb);
     if (!(t >= ta && t <= tb)) return std::nullopt;  // NaN
     return blob_field_at(settings_, s.kernels, s.active, t).value <= 0.0 ? std::optional<double>(t) : std::nullopt;
 }

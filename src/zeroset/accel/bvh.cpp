@@ -351,14 +351,15 @@ template <class Test>
             const Node& node = nodes_[p.index];
             double t_in[width], t_out[width];
             Test::run(node, r, t_min, t_max, t_in, t_out);
+            // One pass: each child met is queued unless it is the nearest so
+            // far, and a nearest one displaced by a nearer is queued then.
             int nearest = -1;
             for (int c = 0; c < width; ++c) {
                 if (!(t_in[c] <= t_out[c]) || node.child[c].index == empty_slot) continue;
-                if (nearest < 0 || t_in[c] < t_in[nearest]) nearest = c;
-            }
-            for (int c = 0; c < width; ++c) {
-                if (c == nearest || !(t_in[c] <= t_out[c]) || node.child[c].index == empty_slot) continue;
-                queue.push_back({t_in[c], node.child[c].index, node.child[c].count});
+                int queued = c;
+                if (nearest < 0 || t_in[c] < t_in[nearest]) std::swap(queued, nearest);
+                if (queued < 0) continue;
+                queue.push_back({t_in[queued], node.child[queued].index, node.child[queued].count});
                 std::push_heap(queue.begin(), queue.end(), later);
             }
             if (nearest >= 0) {

@@ -77,8 +77,7 @@ bool same_tape(const Tape& p, const Tape& q) {
 
 /// 10⁻⁵ of the diagonal, and at least 64 ulps of the largest coordinate.
 double cell_pad(const Box3& box) {
-    const double largest = std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z), std::abs(box.hi.x),
-                                     std::abs(box.hi.y), std::abs(box.hi.z)});
+    const double largest = std::max(max_abs(box.lo), max_abs(box.hi));
     const double ulp = std::nextafter(largest, std::numeric_limits<double>::infinity()) - largest;
     return std::max(1e-5 * box.diagonal(), 64.0 * ulp);
 }

@@ -51,6 +51,14 @@ template <class T> Vec3<T> abs_components(const Vec3<T>& a) {
     return {abs(a.x), abs(a.y), abs(a.z)};
 }
 
+/// The largest |coordinate| of a (for plain numbers): the scale of a point.
+template <class T> T max_abs(const Vec3<T>& a) {
+    using std::abs;
+    const T x = abs(a.x), y = abs(a.y), z = abs(a.z);
+    const T xy = x > y ? x : y;
+    return xy > z ? xy : z;
+}
+
 using Vec3d = Vec3<double>;
 using Vec3f = Vec3<float>;
 

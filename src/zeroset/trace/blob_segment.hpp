@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -50,6 +51,9 @@ struct KernelOnRay {
     std::uint32_t component;
     /// kernel_upper_bound over [t_in, t_out]: blob_field_upper_bound's quick first try.
     double peak = 0.0;
+    /// Where the ray comes nearest the component's center (or axis); −∞
+    /// when every point is as near (a ray along a cylinder's axis).
+    double nearest = -std::numeric_limits<double>::infinity();
 };
 
 /// Where the ray q(t) = q0 + t·qd in a component's kernel space is within

@@ -75,9 +75,8 @@ struct Bounds {
         // units of 2^em below its largest component, so that no square
         // overflows or underflows (r = 10³⁰⁰ is valid) and, the scaling being
         // exact, ordinary spheres clip exactly as without it.
-        const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
         const Vec3d offset = ray.origin - center;
-        const double k = std::max(radius, largest(offset)), m = largest(ray.dir);
+        const double k = std::max(radius, max_abs(offset)), m = max_abs(ray.dir);
         if (!(m > 0.0) || !(k > 0.0) || !std::isfinite(k) || !std::isfinite(m)) return std::nullopt;
         const int ek = binary_exponent(k), em = binary_exponent(m);
         const auto scaled = [](const Vec3d& v, int e) {
