@@ -19,16 +19,17 @@
 namespace zeroset {
 
 /// How far shrinking goes, and what it may spend: each proof splits its slab
-/// into at most `cells_per_proof` boxes; a face stops within `precision` of
-/// the box's width from where the proofs fail; at most `max_passes` rounds
-/// over the six faces, each face taking at most 20 proofs. A pass narrows
-/// loose bounds about 500-fold, so 128 passes reach from any double range to
-/// any surface. Shrinking costs at most (1 + max_passes × 6 × 20) ×
-/// cells_per_proof interval evaluations of f (491 552), about 7 ×
-/// cells_per_proof (224) when the bounds are already tight, and a few
-/// thousand for bounds a thousand times too wide.
+/// into at most `cells_per_proof` boxes, each split trying all three sides
+/// (six interval evaluations of f); a face stops within `precision` of the
+/// box's width from where the proofs fail; at most `max_passes` rounds over
+/// the six faces, each face taking at most 20 proofs. A pass narrows loose
+/// bounds about 500-fold, so 128 passes reach from any double range to any
+/// surface. A proof costs at most 1 + 6 × (cells_per_proof − 1) evaluations
+/// (91), shrinking at most (1 + max_passes × 6 × 20) times that (1.4 M), about
+/// 7 proofs when the bounds are already tight, and a few thousand
+/// evaluations for bounds a thousand times too wide.
 struct ShrinkLimits {
-    int cells_per_proof = 32;
+    int cells_per_proof = 16;
     double precision = 1.0 / 1024.0;
     int max_passes = 128;
 };
