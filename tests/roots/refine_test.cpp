@@ -27,6 +27,19 @@ TEST(RefineRoot, SimpleRootsTakeAFewEvaluations) {
     }
 }
 
+TEST(RefineRoot, EndsAlreadyEvaluatedAreNotEvaluatedAgain) {
+    for (const test::KnownRoot& k : test::known_roots()) {
+        SCOPED_TRACE(k.name);
+        auto fresh = test::counted([&k](double t) { return k.both(t); });
+        const BracketResult from_scratch = refine_root(fresh, k.a, k.b);
+        auto h = test::counted([&k](double t) { return k.both(t); });
+        const BracketResult r = refine_root(h, BracketPoint{k.a, k.both(k.a)}, BracketPoint{k.b, k.both(k.b)});
+        EXPECT_EQ(r.status, from_scratch.status);
+        EXPECT_EQ(r.t, from_scratch.t);  // the same steps, two evaluations fewer
+        EXPECT_EQ(h.calls, fresh.calls - 2);
+    }
+}
+
 TEST(RefineRoot, ClosesTheBracketFromBothSides) {
     // Newton on the convex t² − 2 from t = 2 approaches √2 from above only;
     // the final bracket must still be two adjacent doubles around it.

@@ -83,8 +83,18 @@ public:
         if (settled(lo_)) return;
         hi_.h = evaluate(h, b);
         if (settled(hi_)) return;
-        if (is_inside(lo_.h.value) == is_inside(hi_.h.value)) end(BracketStatus::NoSignChange);
-        checkpoint_width_ = b - a;
+        check_sign_change();
+    }
+
+    /// Starts on [lo.t, hi.t] (lo.t ≤ hi.t) with H already known at both
+    /// ends, as the constructor above finds it: no evaluation.
+    BracketSearch(const BracketPoint& lo, const BracketPoint& hi) : lo_(lo), hi_(hi) {
+        if (!std::isfinite(lo.t) || !std::isfinite(hi.t) || hi.t < lo.t) {
+            end(BracketStatus::InvalidBracket);
+            return;
+        }
+        if (settled(lo_) || settled(hi_)) return;
+        check_sign_change();
     }
 
     [[nodiscard]] const BracketPoint& lo() const { return lo_; }
@@ -152,6 +162,10 @@ private:
         } else {
             return {static_cast<double>(h(t)), std::numeric_limits<double>::quiet_NaN()};
         }
+    }
+    void check_sign_change() {
+        if (is_inside(lo_.h.value) == is_inside(hi_.h.value)) end(BracketStatus::NoSignChange);
+        checkpoint_width_ = hi_.t - lo_.t;
     }
     void end(BracketStatus status) {
         ended_ = true;

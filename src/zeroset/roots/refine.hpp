@@ -56,15 +56,10 @@ inline double next_point(double from, double step, double previous_step, double 
     const double next = from + step;
     return next != from ? next : std::nextafter(from, std::copysign(std::numeric_limits<double>::infinity(), step));
 }
-}  // namespace detail
 
-/// The root of h in [a, b], where h(a) and h(b) lie on opposite sides of the
-/// surface (H ≤ 0 inside) or one of them is exactly 0 (a, the lower end, wins).
-/// h returns H and H′ together. On a monotone segment the root is unique;
-/// otherwise this finds one of them.
-template <DifferentiableFunction F>
-BracketResult refine_root(F&& h, double a, double b, const BracketOptions& options = {}) {
-    BracketSearch search(h, a, b);
+/// Safeguarded Newton on a bracket search already started (see refine_root).
+template <class F>
+BracketResult refine(F& h, BracketSearch& search, const BracketOptions& options) {
     double previous_step = std::numeric_limits<double>::quiet_NaN();  // the last Newton step taken
     double length_before_last = std::numeric_limits<double>::infinity();
     while (search.running(options)) {
@@ -88,6 +83,25 @@ BracketResult refine_root(F&& h, double a, double b, const BracketOptions& optio
         }
     }
     return search.result(options);
+}
+}  // namespace detail
+
+/// The root of h in [a, b], where h(a) and h(b) lie on opposite sides of the
+/// surface (H ≤ 0 inside) or one of them is exactly 0 (a, the lower end, wins).
+/// h returns H and H′ together. On a monotone segment the root is unique;
+/// otherwise this finds one of them.
+template <DifferentiableFunction F>
+BracketResult refine_root(F&& h, double a, double b, const BracketOptions& options = {}) {
+    BracketSearch search(h, a, b);
+    return detail::refine(h, search, options);
+}
+
+/// The same from ends where H and H′ are already known (lo.t ≤ hi.t): no
+/// evaluation is spent on them again.
+template <DifferentiableFunction F>
+BracketResult refine_root(F&& h, const BracketPoint& lo, const BracketPoint& hi, const BracketOptions& options = {}) {
+    BracketSearch search(lo, hi);
+    return detail::refine(h, search, options);
 }
 
 }  // namespace zeroset

@@ -355,9 +355,9 @@ HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels
         if (e.value.is_empty() || !std::isfinite(e.value.lo) || !std::isfinite(e.value.hi)) return HitStatus::Failed;
         if (!e.value.contains(0.0)) continue;  // Fig. 9, step 2: no root here
         if (!e.slope.is_empty() && !e.slope.contains(0.0)) {  // step 4: monotone, so one root at most
-            const ValueAndDerivative fa = point(s.a), fb = point(s.b);
-            if (is_inside(fa.value) == is_inside(fb.value)) continue;
-            const BracketResult r = refine_root(point, s.a, s.b);
+            const BracketPoint a{s.a, point(s.a)}, b{s.b, point(s.b)};
+            if (is_inside(a.h.value) == is_inside(b.h.value)) continue;
+            const BracketResult r = refine_root(point, a, b);
             roots.push_back(r.t);
             if (first_only) return HitStatus::Ok;
             continue;
