@@ -5,6 +5,8 @@
 // the ends of the range, no roots, and a Wilkinson-like degree 16.
 #include <gtest/gtest.h>
 
+#include "root_test_support.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -36,19 +38,7 @@ std::vector<Solver> solvers() {
             {"laguerre", laguerre_roots, false}};
 }
 
-/// Ascending coefficients of scale·Π(t − rᵢ).
-std::vector<double> from_roots(const std::vector<double>& roots, double scale = 1.0) {
-    std::vector<double> c{scale};
-    for (const double r : roots) {
-        std::vector<double> next(c.size() + 1, 0.0);
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            next[i + 1] += c[i];
-            next[i] -= r * c[i];
-        }
-        c = next;
-    }
-    return c;
-}
+using test::from_roots;
 
 std::vector<double> solve(const Solver& s, const std::vector<double>& c, double t0, double t1) {
     std::array<double, max_polynomial_degree> out{};

@@ -81,4 +81,18 @@ inline std::vector<KnownRoot> known_roots() {
     };
 }
 
+/// Ascending coefficients of scale·Π(t − rᵢ).
+inline std::vector<double> from_roots(const std::vector<double>& roots, double scale = 1.0) {
+    std::vector<double> c{scale};
+    for (const double r : roots) {
+        std::vector<double> next(c.size() + 1, 0.0);
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            next[i + 1] += c[i];
+            next[i] -= r * c[i];
+        }
+        c = next;
+    }
+    return c;
+}
+
 }  // namespace zeroset::test

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "root_test_support.hpp"
 #include "zeroset/roots/fast_polynomial.hpp"
 #include "zeroset/roots/polynomial_enclosure.hpp"
 #include "zeroset/roots/polynomial_roots.hpp"
@@ -25,15 +26,7 @@ PossibleRoot by_extrema(PolynomialEnclosure f, double t0, double t1) {
 
 /// ∏ (t − rᵢ) · scale, plus `lift`: real roots where wanted, or a dip.
 std::vector<double> with_roots(const std::vector<double>& roots, double scale, double lift) {
-    std::vector<double> p{scale};
-    for (const double r : roots) {
-        std::vector<double> q(p.size() + 1, 0.0);
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            q[i + 1] += p[i];
-            q[i] -= r * p[i];
-        }
-        p = q;
-    }
+    std::vector<double> p = test::from_roots(roots, scale);
     p[0] += lift;
     return p;
 }
