@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <random>
+#include <vector>
 
 #include "zeroset/trace/blob_segment.hpp"
 
@@ -83,6 +85,57 @@ TEST(BlobSegment, KernelArgumentEnclosesUAndItsSlope) {
         }
     }
     EXPECT_EQ(checked, 160000);
+}
+
+/// A Blinn component of strength 1 and blobbiness −1 (K = e^(1−u)) centred
+/// at (c, 0.2, 0) in kernel space, on the ray along x, within its reach.
+KernelOnRay blinn_on_x_axis(double c, std::uint32_t component) {
+    KernelOnRay k{};
+    k.q0 = {-c, 0.2, 0.0};
+    k.qd = {1.0, 0.0, 0.0};
+    k.strength = 1.0;
+    k.blobbiness = -1.0;
+    const std::optional<ReachOnRay> reach = reach_on_ray(k.q0, k.qd, 16.0);
+    k.t_in = reach->span.t0;
+    k.t_out = reach->span.t1;
+    k.nearest = reach->nearest;
+    k.component = component;
+    return k;
+}
+
+TEST(BlobSegment, ASegmentIsCutAtItsComponentsNearestApproaches) {
+    // f = 0.5 − Σ e^(1−u): each term rises until the ray's nearest approach
+    // to its centre and falls after, so f falls monotonically before the
+    // first approach, where an enclosure can prove the first root at once.
+    const BlobSegmentSolver solver({BlobKernel::Blinn, 0.5, 1e-10, 10000});
+    for (const bool two : {false, true}) {
+        std::vector<KernelOnRay> kernels{blinn_on_x_axis(3.0, 0)};
+        std::vector<std::uint32_t> active{0};
+        if (two) {
+            kernels.push_back(blinn_on_x_axis(4.5, 1));
+            active.push_back(1);
+        }
+        const double ta = kernels[0].t_in, tb = kernels.back().t_out;
+        std::vector<double> roots;
+        TraceCounters counters;
+        ASSERT_EQ(solver.roots(kernels, active, ta, tb, true, roots, counters), HitStatus::Ok);
+        ASSERT_EQ(roots.size(), 1u);
+        // With two components the other's rising term keeps f′ below 0 up to the
+        // first approach; one alone has f′ = 0 at its approach, the piece's end,
+        // so that piece is halved a few times (halving from the start took 5).
+        EXPECT_LE(counters.interval_evaluations, two ? 1u : 4u) << (two ? "two components" : "one component");
+        // The first root: Σ e^(1−u) = 0.5 on the way in.
+        const ValueAndDerivative f = blob_field_at({BlobKernel::Blinn, 0.5, 1e-10, 10000}, kernels, active, roots[0]);
+        EXPECT_NEAR(f.value, 0.0, 1e-12);
+        EXPECT_LT(f.derivative, 0.0);
+        if (!two) {
+            EXPECT_NEAR(roots[0], 3.0 - std::sqrt(1.0 + std::log(2.0) - 0.04), 1e-12);
+        }
+        // Every root, both ways: the spans' path cuts the same way.
+        roots.clear();
+        ASSERT_EQ(solver.roots(kernels, active, ta, tb, false, roots, counters), HitStatus::Ok);
+        EXPECT_EQ(roots.size(), 2u);
+    }
 }
 
 }  // namespace

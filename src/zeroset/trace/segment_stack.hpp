@@ -26,8 +26,9 @@ public:
         push(mid, s.b, s.depth + 1);
         push(from, mid, s.depth + 1);
     }
-    [[nodiscard]] bool can_split(const Segment& s) const {
-        return size_ + 2 <= items_.size() && s.depth + 1 < max_depth;
+    /// Whether s may be split into `pieces` (two: its halves).
+    [[nodiscard]] bool can_split(const Segment& s, std::size_t pieces = 2) const {
+        return size_ + pieces <= items_.size() && s.depth + 1 < max_depth;
     }
     /// True while the segment's midpoint is a double strictly inside it:
     /// narrower segments are at the resolution of doubles.
