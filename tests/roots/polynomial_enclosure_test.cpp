@@ -169,6 +169,25 @@ TEST(MonotoneRoot, ATolerancePlacesTheRootWithinItForFewerEvaluations) {
     EXPECT_LT(tolerant, full);
 }
 
+TEST(MonotoneRoot, AFirstGuessNearTheRootSavesEvaluationsAndOneOutsideIsIgnored) {
+    // The same pieces as above: a guess within 1 % of the bracket from the
+    // root (as a control polygon's crossing gives) ends at the same root;
+    // a guess outside the bracket (or NaN) leaves the secant start.
+    int secant = 0, guessed = 0, ignored = 0;
+    for (int i = 0; i < 200; ++i) {
+        const double r = -0.9 + 2.8 * i / 200.0;
+        const std::vector<double> p{-3.0 * r, 3.0 - r, 1.0 - 3.0 * r, 3.0 - r, 1.0};
+        const PolynomialSample lo = sample_polynomial(p, -1.0), hi = sample_polynomial(p, 2.0);
+        const double from_secant = monotone_root(p, lo, hi, secant);
+        EXPECT_NEAR(monotone_root(p, lo, hi, guessed, 0.0, r + 0.03), from_secant, 4e-16) << r;
+        int outside = 0;
+        EXPECT_EQ(monotone_root(p, lo, hi, outside, 0.0, 5.0), from_secant) << r;
+        ignored += outside;
+    }
+    EXPECT_LT(guessed, secant);
+    EXPECT_EQ(ignored, secant);
+}
+
 TEST(PolynomialEnclosure, APositiveSpanIsProvenByItsBernsteinCoefficients) {
     const std::vector<double> radius{1e-11, 0.0, 0.0};
     // (t − 1)² + depth: on [0, 3] the Bernstein coefficients are 1 + d,

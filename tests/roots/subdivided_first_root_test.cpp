@@ -117,6 +117,10 @@ TEST(SubdividedFirstRoot, ACrossingIsTheRootOfTheRoundedPolynomial) {
     ASSERT_TRUE(r.found);
     EXPECT_TRUE(r.sign_change);
     EXPECT_NEAR(r.t, 0.5, 1e-15);
+    // The start, the conversion, a split and the closed form with its
+    // polish: the piece's end values are its end coefficients, beyond the
+    // bound, and are not evaluated again (7 evaluations when they were).
+    EXPECT_LE(r.evaluations, 5);
 }
 
 TEST(SubdividedFirstRoot, CoefficientsAboveZeroButWithinTheBoundProveNothing) {

@@ -50,7 +50,7 @@ PolynomialSample sample_polynomial(std::span<const double> p, double t) {
 }
 
 double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialSample hi, int& evaluations,
-                     double tolerance) {
+                     double tolerance, double first_guess) {
     double a = lo.t;
     double b = hi.t;
     if (const auto t = closed_form_root(p, a, b)) {
@@ -64,7 +64,7 @@ double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialS
         return std::abs(horner(p, polished).value) <= std::abs(v.value) ? polished : *t;
     }
     const bool a_negative = lo.value < 0.0;
-    double x = a + (b - a) * (lo.value / (lo.value - hi.value));
+    double x = a < first_guess && first_guess < b ? first_guess : a + (b - a) * (lo.value / (lo.value - hi.value));
     double previous_step = b - a;
     for (int i = 0; i < max_bisections; ++i) {
         if (!(a < x && x < b)) x = 0.5 * a + 0.5 * b;

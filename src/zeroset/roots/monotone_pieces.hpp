@@ -6,6 +6,7 @@
 // a guarded first hit (roots/polynomial_enclosure.hpp).
 #pragma once
 
+#include <limits>
 #include <span>
 
 namespace zeroset {
@@ -30,9 +31,11 @@ PolynomialSample sample_polynomial(std::span<const double> p, double t);
 /// — or, given a `tolerance` in t, at once after a steady step shorter than
 /// it (Newton's next error is about the square of its step: for the ends
 /// of monotone pieces, full precision costs one or two evaluations more and
-/// buys nothing). Counts its evaluations.
+/// buys nothing). Counts its evaluations. Only the ends' t and value are
+/// read. `first_guess`, when inside the bracket, replaces the secant point
+/// as Newton's start.
 double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialSample hi, int& evaluations,
-                     double tolerance = 0.0);
+                     double tolerance = 0.0, double first_guess = std::numeric_limits<double>::quiet_NaN());
 
 /// The roots of p in [t0, t1] given the roots of p′ there (increasing): at
 /// most `limit` of them, increasing. A point where p is indistinguishable

@@ -38,6 +38,17 @@ Signs classify(const double* b, int n, double delta) {
     return Signs::OneCrossing;
 }
 
+/// Where the control polygon of the Bernstein coefficients b[0..n] on
+/// [a, b] first crosses 0: near F's root on a piece with one sign change,
+/// and nearer the finer the piece (a start for Newton).
+double control_polygon_crossing(const double* b, int n, double a, double end) {
+    int k = 0;
+    while (k < n && b[k + 1] > 0.0) ++k;
+    if (k == n) return std::numeric_limits<double>::quiet_NaN();
+    const double at = static_cast<double>(k) + b[k] / (b[k] - b[k + 1]);
+    return a + (end - a) * (at / static_cast<double>(n));
+}
+
 /// The scan of polynomial_enclosure.hpp over F̂'s extrema in [a, b].
 PossibleRoot scan(PolynomialEnclosure f, double a, double b) {
     std::array<double, max_polynomial_degree> extrema{};
@@ -74,18 +85,28 @@ PossibleRoot subdivide(PolynomialEnclosure f, double t0, double t1, const Polyno
         // and at most R at the span's far end: that bound, found once, settles
         // most pieces; only those it leaves undecided pay for their own.
         const double rounding = noise + piece.depth * per_split;
-        Signs signs = classify(piece.c.data(), n, rounding + span_radius);
-        if (signs == Signs::Undecided && piece.depth > 0)
-            signs = classify(piece.c.data(), n, rounding + enclosure_bound(f, std::max(-piece.a, piece.b)));
+        double delta = rounding + span_radius;
+        Signs signs = classify(piece.c.data(), n, delta);
+        if (signs == Signs::Undecided && piece.depth > 0) {
+            delta = rounding + enclosure_bound(f, std::max(-piece.a, piece.b));
+            signs = classify(piece.c.data(), n, delta);
+        }
         if (signs == Signs::Positive) continue;
         if (signs == Signs::OneCrossing) {
-            const PolynomialSample lo = sample_polynomial(f.value, piece.a);
-            const PolynomialSample hi = sample_polynomial(f.value, piece.b);
-            r.evaluations += 2;
+            // The end coefficients are F̂ at the ends: beyond δ, their signs
+            // need no evaluation (one within δ does).
+            const double* b = piece.c.data();
+            const auto end_value = [&](double t, double coefficient) {
+                if (std::abs(coefficient) > delta) return coefficient;
+                ++r.evaluations;
+                return sample_polynomial(f.value, t).value;
+            };
+            const PolynomialSample lo{piece.a, end_value(piece.a, b[0]), 0.0, false};
+            const PolynomialSample hi{piece.b, end_value(piece.b, b[n]), 0.0, false};
             if (lo.value > 0.0 && hi.value < 0.0) {
                 r.found = true;
                 r.sign_change = true;
-                r.t = monotone_root(f.value, lo, hi, r.evaluations);
+                r.t = monotone_root(f.value, lo, hi, r.evaluations, 0.0, control_polygon_crossing(b, n, piece.a, piece.b));
                 return r;
             }
         }

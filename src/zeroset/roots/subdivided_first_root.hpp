@@ -9,7 +9,9 @@
 //
 //   - every coefficient above δ: F > 0 on the piece, no root;
 //   - signs + … + (at most one within δ) − … −: F and F̂ have exactly one
-//     root on the piece; F̂'s, refined by bracketed Newton, is the hit;
+//     root on the piece; F̂'s, refined by bracketed Newton from where the
+//     control polygon crosses 0, is the hit (the end coefficients are F̂ at
+//     the ends: beyond δ, their signs bracket it without an evaluation);
 //   - anything else is split at its middle (de Casteljau), and after six
 //     splits a piece still undecided — a dip towards 0, a cluster, a graze
 //     — goes to the scan over F̂'s extrema on that piece alone.
