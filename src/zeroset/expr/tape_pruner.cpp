@@ -6,65 +6,78 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <stdexcept>
 
 namespace zeroset {
 
 TapePruner::TapePruner(const Tape& full)
     : slots_(full.slot_count()),
-      choices_(full.clauses().size()),
       equals_(full.clauses().size()),
+      constant_value_(full.slot_count()),
       clause_live_(full.clauses().size(), 0),
       constant_live_(full.slot_count(), 0),
       working_slot_(full.clauses().size()),
       emitted_at_(full.clauses().size()),
       constant_slot_(full.slot_count()) {}
 
-namespace {
+// Which side of a min or max wins over the box, if one does (neither
+// where an interval is empty: every comparison with NaN is false).
+[[gnu::always_inline]] inline void TapePruner::record_winners(Op op, const Interval& a, const Interval& b,
+                                                              const ClauseOperands& v, std::array<ValueId, lanes>& equals) {
+    const bool a_below = a.hi <= b.lo, b_below = b.hi <= a.lo;
+    const bool left = op == Op::Min ? a_below : b_below, right = op == Op::Min ? b_below : a_below;
+    if (!left && !right) return;
+    equals[0] = resolve(left ? v.a : v.b, 0);
+    ++choices_made_[0];
+}
 
-// The bounds of lane k of a number of either type.
-double lower(const Interval& v, int) { return v.lo; }
-double upper(const Interval& v, int) { return v.hi; }
-double lower(const IntervalLanes& v, int k) { return v.lo[static_cast<std::size_t>(k)]; }
-double upper(const IntervalLanes& v, int k) { return v.hi[static_cast<std::size_t>(k)]; }
-
-template <class T>
-constexpr int lane_count = 1;
-template <>
-constexpr int lane_count<IntervalLanes> = IntervalLanes::count;
-
-}  // namespace
+// The same for four lanes at once, without a branch a lane: each lane
+// makes the one-box choice (left first).
+[[gnu::always_inline]] inline void TapePruner::record_winners(Op op, const IntervalLanes& a, const IntervalLanes& b,
+                                                              const ClauseOperands& v, std::array<ValueId, lanes>& equals) {
+    using Ids = ValueId __attribute__((vector_size(16)));
+    using IdMask = std::int32_t __attribute__((vector_size(16)));
+    const IntervalLanes::Mask a_below = a.hi <= b.lo, b_below = b.hi <= a.lo;
+    const IntervalLanes::Mask left64 = op == Op::Min ? a_below : b_below;
+    const IntervalLanes::Mask right64 = (op == Op::Min ? b_below : a_below) & ~left64;
+    const IdMask left = __builtin_convertvector(left64, IdMask), right = __builtin_convertvector(right64, IdMask);
+    const IdMask chosen = left | right;
+    if ((chosen[0] | chosen[1] | chosen[2] | chosen[3]) == 0) return;
+    // An operand's value over each lane's box: a clause's own winners, or a constant or variable.
+    const auto lanes_of = [&](ValueId id) {
+        if ((id & clause_value) == 0) return Ids{id, id, id, id};
+        Ids row;
+        std::memcpy(&row, equals_[id & ~clause_value].data(), sizeof row);
+        return row;
+    };
+    Ids row;
+    std::memcpy(&row, equals.data(), sizeof row);
+    row = left ? lanes_of(v.a) : row;
+    row = right ? lanes_of(v.b) : row;
+    std::memcpy(equals.data(), &row, sizeof row);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(lanes); ++k) choices_made_[k] += chosen[k] != 0;
+}
 
 // Flattened: the op dispatch and the interval arithmetic are inlined into
 // this loop, which is most of the cost of slicing a large model.
 template <class T>
 [[gnu::flatten]] T TapePruner::walk(const Tape& source, T* s) {
-    constexpr int n = lane_count<T>;
     if (!source.prunable()) throw std::logic_error("a tape made without value ids cannot be pruned again");
     source_ = &source;
     choices_made_.fill(0);
-    for (const auto& [slot, value] : source.constants()) s[slot] = T(value);
+    for (const auto& [slot, value] : source.constants()) {
+        s[slot] = T(value);
+        constant_value_[slot] = value;
+    }
     const std::vector<Clause>& clauses = source.clauses();
     for (std::size_t i = 0; i < clauses.size(); ++i) {
         const Clause& c = clauses[i];
         const T& a = s[c.a];
         const T& b = s[op_arity(c.op) == 2 ? c.b : c.a];
-        std::array<Choice, lanes>& choices = choices_[i];
-        choices = {};
-        if (c.op == Op::Min || c.op == Op::Max) {
-            for (int k = 0; k < n; ++k) {
-                // Both false for an empty interval.
-                const bool a_below = upper(a, k) <= lower(b, k), b_below = upper(b, k) <= lower(a, k);
-                Choice choice = Choice::Both;
-                if (c.op == Op::Min ? a_below : b_below) choice = Choice::Left;
-                else if (c.op == Op::Min ? b_below : a_below) choice = Choice::Right;
-                if (choice == Choice::Both) continue;
-                const ClauseOperands& v = source.operand_values()[i];
-                equals_[i][k] = resolve(choice == Choice::Left ? v.a : v.b, k);
-                choices[k] = choice;
-                ++choices_made_[k];
-            }
-        }
+        std::array<ValueId, lanes>& equals = equals_[i];
+        equals.fill(clause_value | static_cast<ValueId>(i));
+        if (c.op == Op::Min || c.op == Op::Max) record_winners(c.op, a, b, source.operand_values()[i], equals);
         s[c.out] = apply_op<T>(c.op, a, b, static_cast<int>(c.b));
     }
     return s[source.result_slot()];
@@ -121,6 +134,8 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
     std::uint32_t free_count = 0, next_slot = 3;
     std::uint32_t *clause_live = clause_live_.data(), *constant_live = constant_live_.data();
     std::uint32_t *working_slot = working_slot_.data(), *constant_slot = constant_slot_.data();
+    const double* constant_value = constant_value_.data();
+    out.constants_.clear();  // each live constant is added as it takes its slot
     // The slot of `v` in the pruned tape, taken at its last use (the first
     // seen walking backwards): a working slot freed at a value's definition,
     // or a new one; a constant's is never freed, as it is loaded once.
@@ -136,7 +151,8 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
         if (v < 3) return v;
         if (constant_live[v] != epoch) {
             constant_live[v] = epoch;
-            constant_slot[v] = next_slot++;
+            constant_slot[v] = next_slot;
+            out.constants_.emplace_back(next_slot++, constant_value[v]);
         }
         return constant_slot[v];
     };
@@ -182,9 +198,6 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
     if (with_ids)
         for (std::size_t k = first; k < n; ++k)
             out.operand_values_[k - first] = {renumber(kept_operands_[k].a), renumber(kept_operands_[k].b)};
-    out.constants_.clear();
-    for (const auto& [slot, value] : source.constants())
-        if (constant_live[slot] == epoch) out.constants_.emplace_back(constant_slot[slot], value);
     out.result_slot_ = root_slot;
     // The root is the last kept clause when it is a clause's value.
     const auto last_kept = static_cast<ValueId>(n - first - 1);

@@ -65,11 +65,15 @@ public:
     }
 
 private:
-    enum class Choice : std::uint8_t { Both, Left, Right };
-
     /// The walk of both evaluate()s, over the number type T (Interval or IntervalLanes).
     template <class T>
     T walk(const Tape& source, T* slots);
+    /// For walk(): which side of a min or max wins over the box (in each
+    /// lane), into `equals` (the clause's row of equals_) and choices_made_.
+    void record_winners(Op op, const Interval& a, const Interval& b, const ClauseOperands& v,
+                        std::array<ValueId, lanes>& equals);
+    void record_winners(Op op, const IntervalLanes& a, const IntervalLanes& b, const ClauseOperands& v,
+                        std::array<ValueId, lanes>& equals);
     /// walk() of four lanes compiled for AVX2 (x86-64 builds for older CPUs only).
     IntervalLanes walk_avx2(const Tape& source, IntervalLanes* slots);
     /// Writes the tape pruned to box `lane` of the last evaluate() into `out`.
@@ -77,16 +81,16 @@ private:
 
     /// The value `v` is over box `lane`: the winner of a min or max that has one.
     [[nodiscard]] ValueId resolve(ValueId v, int lane) const {
-        if ((v & clause_value) == 0) return v;
-        const std::uint32_t j = v & ~clause_value;
-        return choices_[j][lane] == Choice::Both ? v : equals_[j][lane];
+        return (v & clause_value) == 0 ? v : equals_[v & ~clause_value][static_cast<std::size_t>(lane)];
     }
     const Tape* source_ = nullptr;  // of the last evaluate()
     std::array<std::size_t, lanes> choices_made_{};
     std::vector<Interval> slots_;
     std::vector<IntervalLanes> lane_slots_;         // made by the first lanes evaluate()
-    std::vector<std::array<Choice, lanes>> choices_;  // per clause of the source tape and lane
-    std::vector<std::array<ValueId, lanes>> equals_;  // per chosen min/max and lane: the (resolved) value it equals
+    // Per clause of the source tape and lane: the value it equals over the
+    // lane's box — its own, or for a min or max with a winner the winner's.
+    std::vector<std::array<ValueId, lanes>> equals_;
+    std::vector<double> constant_value_;  // per slot of the source's constants: its value
     // Per clause and per constant of the source, stamped with epoch_ once live.
     std::vector<std::uint32_t> clause_live_, constant_live_;
     std::vector<std::uint32_t> working_slot_;   // per live clause: its slot in the pruned tape
