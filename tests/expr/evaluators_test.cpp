@@ -20,6 +20,7 @@
 #include "zeroset/expr/batch_evaluator.hpp"
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/lipschitz.hpp"
+#include "zeroset/expr/tape_pruner.hpp"
 #include "zeroset/math/box3.hpp"
 
 namespace zeroset {
@@ -250,6 +251,38 @@ TEST(Evaluators, BatchHandlesEmptyAndPartialBatches) {
         }
         batch.evaluate(x, y, z, out);
         for (std::size_t i = 0; i < n; ++i) EXPECT_DOUBLE_EQ(out[i], eval(x[i], y[i], z[i])) << "n = " << n;
+    }
+}
+
+TEST(Evaluators, BatchRebindsBetweenPrunedTapesKeepEveryConstantRight) {
+    // Two balls pruned apart: each pruned tape has its own constants, in
+    // slots the other uses for working values or other constants. Going back
+    // and forth, a rebind refills only what changed; the values must stay
+    // those of a fresh evaluator every time.
+    const auto ball = [](double cx, double r) { return hypot(hypot(X - cx, Y), Z) - r; };
+    const Tape full(min(ball(-5.0, 1.0), 3.0 * ball(5.0, 2.0)));
+    TapePruner pruner(full);
+    const Box3 left{{-6, -1, -1}, {-4, 1, 1}}, right{{4, -1, -1}, {6, 1, 1}};
+    Tape near_left, near_right;
+    pruner.prune(full, left, near_left);
+    pruner.prune(full, right, near_right);
+    ASSERT_LT(near_left.clauses().size(), full.clauses().size());
+    ASSERT_LT(near_right.clauses().size(), full.clauses().size());
+    BatchEvaluator<float> batch(full);
+    Evaluator<double> reference(full);
+    std::vector<float> x(7), y(7), z(7), out(7);
+    for (int round = 0; round < 6; ++round) {
+        // Round 4 takes the full tape, whose constants the pruned tapes' working values overwrote.
+        const bool on_left = round % 2 == 1;
+        batch.rebind(round == 4 ? full : on_left ? near_left : near_right);
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            x[i] = static_cast<float>((on_left ? -5.0 : 5.0) + 0.1 * static_cast<double>(i));
+            y[i] = 0.25f;
+            z[i] = -0.5f;
+        }
+        batch.evaluate(x, y, z, out);
+        for (std::size_t i = 0; i < x.size(); ++i)
+            EXPECT_NEAR(out[i], reference(x[i], y[i], z[i]), 1e-5) << "round " << round << ", point " << i;
     }
 }
 

@@ -2,12 +2,16 @@
 #include "zeroset/expr/batch_evaluator.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace zeroset {
 
 template <class F>
 BatchEvaluator<F>::BatchEvaluator(const Tape& tape)
-    : tape_(&tape), slots_(static_cast<std::size_t>(tape.slot_count()) * lanes) {
+    : tape_(&tape),
+      slots_(static_cast<std::size_t>(tape.slot_count()) * lanes),
+      constant_(tape.slot_count()),
+      filled_(tape.slot_count(), 0) {
     load_constants();
 }
 
@@ -19,7 +23,13 @@ void BatchEvaluator<F>::rebind(const Tape& tape) {
 
 template <class F>
 void BatchEvaluator<F>::load_constants() {
-    for (const auto& [s, value] : tape_->constants()) std::fill_n(slot(s), lanes, static_cast<F>(value));
+    for (const auto& [s, value] : tape_->constants()) {
+        const F v = static_cast<F>(value);
+        if (filled_[s] && std::memcmp(&constant_[s], &v, sizeof v) == 0) continue;  // bits, for −0 and NaN
+        std::fill_n(slot(s), lanes, v);
+        constant_[s] = v;
+        filled_[s] = 1;
+    }
 }
 
 template <class F>
@@ -33,6 +43,8 @@ void BatchEvaluator<F>::evaluate(std::span<const F> x, std::span<const F> y, std
         evaluate_lanes();
         std::copy_n(slot(tape_->result_slot()), count, out.data() + start);
     }
+    // The clauses wrote over their slots, which another tape may use for a constant.
+    for (const Clause& c : tape_->clauses()) filled_[c.out] = 0;
 }
 
 // Every lane is computed even in a partial batch: the loop count stays a

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -34,6 +35,11 @@ private:
 
     const Tape* tape_;
     std::vector<F> slots_;  // slot-major: slot s occupies [s·lanes, (s+1)·lanes)
+    // Per slot: the constant its lanes hold, while `filled` says they still
+    // do. Pruned tapes of one region often put the same constants in the
+    // same slots, and a rebind then fills only what changed.
+    std::vector<F> constant_;
+    std::vector<std::uint8_t> filled_;
 };
 
 extern template class BatchEvaluator<float>;
