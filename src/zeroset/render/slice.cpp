@@ -67,8 +67,20 @@ public:
         // alike; the boxes stay correct, as they only need lo ≤ hi.
     }
 
-    /// The point of pixel (i, j), as (x, y, z).
-    [[nodiscard]] std::array<float, 3> point(int i, int j) const { return place(across_[i], up_[j]); }
+    /// The points of pixels [x0, x1) × [y0, y1), row by row, into x, y and z.
+    void points(int x0, int y0, int x1, int y1, float* x, float* y, float* z) const {
+        // Which of x, y, z runs across the image, which up, and which is the plane's.
+        float* across = axis_ == 0 ? y : x;
+        float* up = axis_ == 2 ? y : z;
+        float* at = axis_ == 0 ? x : axis_ == 1 ? y : z;
+        std::size_t n = 0;
+        for (int j = y0; j < y1; ++j)
+            for (int i = x0; i < x1; ++i, ++n) {
+                across[n] = across_[static_cast<std::size_t>(i)];
+                up[n] = up_[static_cast<std::size_t>(j)];
+                at[n] = at_;
+            }
+    }
 
     /// The box around the centres of pixels [x0, x1) × [y0, y1).
     [[nodiscard]] Box3 box(int x0, int y0, int x1, int y1) const {
@@ -185,15 +197,8 @@ private:
 
     void evaluate_leaf(int x0, int y0, const Tape& tape) {
         const int x1 = std::min(x0 + leaf_size, size_), y1 = std::min(y0 + leaf_size, size_);
-        std::size_t n = 0;
-        for (int y = y0; y < y1; ++y) {
-            for (int x = x0; x < x1; ++x, ++n) {
-                const std::array<float, 3> p = grid_.point(x, y);
-                xs_[n] = p[0];
-                ys_[n] = p[1];
-                zs_[n] = p[2];
-            }
-        }
+        grid_.points(x0, y0, x1, y1, xs_.data(), ys_.data(), zs_.data());
+        auto n = static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0);
         batch_.rebind(tape);
         batch_.evaluate(std::span(xs_).first(n), std::span(ys_).first(n), std::span(zs_).first(n),
                         std::span(out_).first(n));
