@@ -39,8 +39,9 @@ Signs classify(const double* b, int n, double delta) {
 }
 
 /// Where the control polygon of the Bernstein coefficients b[0..n] on
-/// [a, b] first crosses 0: near F's root on a piece with one sign change,
-/// and nearer the finer the piece (a start for Newton).
+/// [a, end] first crosses 0 (b[0] > 0): near F's root on a piece with one
+/// sign change, and nearer the finer the piece (a start for Newton); NaN
+/// when it does not cross.
 double control_polygon_crossing(const double* b, int n, double a, double end) {
     int k = 0;
     while (k < n && b[k + 1] > 0.0) ++k;
@@ -94,15 +95,16 @@ PossibleRoot subdivide(PolynomialEnclosure f, double t0, double t1, const Polyno
         if (signs == Signs::Positive) continue;
         if (signs == Signs::OneCrossing) {
             // The end coefficients are F̂ at the ends: beyond δ, their signs
-            // need no evaluation (one within δ does).
+            // need no evaluation. The first always is (the signs start with
+            // a run above δ); the last may be the one within δ.
             const double* b = piece.c.data();
-            const auto end_value = [&](double t, double coefficient) {
-                if (std::abs(coefficient) > delta) return coefficient;
+            double end = b[n];
+            if (!(end < -delta)) {
                 ++r.evaluations;
-                return sample_polynomial(f.value, t).value;
-            };
-            const PolynomialSample lo{piece.a, end_value(piece.a, b[0]), 0.0, false};
-            const PolynomialSample hi{piece.b, end_value(piece.b, b[n]), 0.0, false};
+                end = sample_polynomial(f.value, piece.b).value;
+            }
+            const PolynomialSample lo{piece.a, b[0], 0.0, false};
+            const PolynomialSample hi{piece.b, end, 0.0, false};
             if (lo.value > 0.0 && hi.value < 0.0) {
                 r.found = true;
                 r.sign_change = true;

@@ -1,8 +1,9 @@
 // SegmentStack: the ray segments a subdividing method still has to look at,
 // the front of the ray on top, so roots are met in increasing t. Splitting
-// pops one segment and pushes its two halves, so the stack grows by one per
-// level of subdivision; its fixed capacity bounds the depth, and callers split
-// only while can_split() (otherwise they must settle the segment as it is).
+// pops one segment and pushes its two halves (or a few pieces), so the stack
+// grows by one or a few per level of subdivision; its fixed capacity bounds
+// the depth, and callers split only while can_split() (otherwise they must
+// settle the segment as it is).
 #pragma once
 
 #include <array>
