@@ -78,8 +78,8 @@ public:
             for (int i = x0; i < x1; ++i, ++n) {
                 across[n] = across_[static_cast<std::size_t>(i)];
                 up[n] = up_[static_cast<std::size_t>(j)];
-                at[n] = at_;
             }
+        std::fill_n(at, n, at_);
     }
 
     /// The box around the centres of pixels [x0, x1) × [y0, y1).

@@ -85,37 +85,42 @@ Enclosure enclose(const BlobSegmentSettings& s, std::span<const KernelOnRay> ker
     return {s.threshold - field, -field_slope};
 }
 
-/// Pushes a segment cut at its components' nearest approaches (front on
-/// top) and returns whether it did: not when none lies inside, nor when more
-/// than a few do. Every kernel decreases in u, and u is least at the nearest
-/// approach, so between two of them each component's term is monotone, and
-/// where they all have one sign of strength (the usual blob) so is f: its
-/// enclosures then prove one root or none at once, where halving from the
-/// middle takes several levels. Each piece costs an enclosure of all the
-/// components, so with many (a molecule's segments) halving does better.
-/// The cuts only choose where to split; the enclosures still decide.
-bool split_at_nearest_approaches(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active,
-                                 const Segment& s, SegmentStack& segments) {
+/// Pushes [ta, tb] onto the empty stack, front on top: cut at its
+/// components' nearest approaches when one to three lie inside, else whole.
+/// Every kernel decreases in u, and u is least at the nearest approach, so
+/// between two of them each component's term is monotone, and where they
+/// all have one sign of strength (the usual blob) so is f: its enclosures
+/// then prove one root or none at once, where halving from the middle takes
+/// several levels. Each piece costs an enclosure of all the components, so
+/// with many (a molecule's segments) halving does better. The cuts only
+/// choose where to split; the enclosures still decide.
+void push_cut_at_nearest_approaches(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active,
+                                    double ta, double tb, SegmentStack& segments) {
     constexpr std::size_t max_cuts = 3;
     std::array<double, max_cuts> cuts{};
     std::size_t count = 0;
     for (const std::uint32_t i : active) {
         const double t = kernels[i].nearest;
-        if (!(t > s.a && t < s.b)) continue;
-        if (count == max_cuts) return false;
+        if (!(t > ta && t < tb)) continue;
+        if (count == max_cuts) {
+            count = 0;  // too many: whole
+            break;
+        }
         std::size_t j = count++;  // sorted as they come: there are few
         for (; j > 0 && cuts[j - 1] > t; --j) cuts[j] = cuts[j - 1];
         cuts[j] = t;
     }
-    if (count == 0 || !segments.can_split(s, count + 1)) return false;
-    double end = s.b;
+    if (count == 0) {
+        segments.push(ta, tb, 0);
+        return;
+    }
+    double end = tb;
     for (std::size_t j = count; j-- > 0;) {
         if (cuts[j] >= end) continue;  // the same approach twice
-        segments.push(cuts[j], end, s.depth + 1);
+        segments.push(cuts[j], end, 1);
         end = cuts[j];
     }
-    segments.push(s.a, end, s.depth + 1);
-    return true;
+    segments.push(ta, end, 1);
 }
 
 }  // namespace
@@ -378,7 +383,7 @@ HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels
     };
     const std::size_t found_before = roots.size();
     SegmentStack segments;
-    if (!split_at_nearest_approaches(kernels, active, Segment{ta, tb, 0}, segments)) segments.push(ta, tb, 0);
+    push_cut_at_nearest_approaches(kernels, active, ta, tb, segments);
     for (long visited = 0; !segments.empty(); ++visited) {
         if (visited == settings_.max_segments || counters.over_limit()) return HitStatus::Failed;
         const Segment s = segments.pop();
@@ -401,8 +406,7 @@ HitStatus BlobSegmentSolver::interval_roots(std::span<const KernelOnRay> kernels
             enclose(settings_, kernels, active, t_c, Interval(mid) - Interval(t_c)).value;
         if (!(at_mid + e.slope * (Interval(s.a, s.b) - Interval(mid))).contains(0.0)) continue;
         if (s.b - s.a > settings_.tangent_width && SegmentStack::above_resolution(s) && segments.can_split(s)) {
-            // Step 5: front half first.
-            segments.split(s, s.a);
+            segments.split(s, s.a);  // step 5: front half first
             continue;
         }
         // Still ambiguous at the finest width: a tangent root.

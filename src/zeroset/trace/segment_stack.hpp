@@ -1,9 +1,8 @@
 // SegmentStack: the ray segments a subdividing method still has to look at,
 // the front of the ray on top, so roots are met in increasing t. Splitting
-// pops one segment and pushes its two halves (or a few pieces), so the stack
-// grows by one or a few per level of subdivision; its fixed capacity bounds
-// the depth, and callers split only while can_split() (otherwise they must
-// settle the segment as it is).
+// pops one segment and pushes its two halves, so the stack grows by one per
+// level of subdivision; its fixed capacity bounds the depth, and callers split
+// only while can_split() (otherwise they must settle the segment as it is).
 #pragma once
 
 #include <array>
@@ -27,9 +26,8 @@ public:
         push(mid, s.b, s.depth + 1);
         push(from, mid, s.depth + 1);
     }
-    /// Whether s may be split into `pieces` (two: its halves).
-    [[nodiscard]] bool can_split(const Segment& s, std::size_t pieces = 2) const {
-        return size_ + pieces <= items_.size() && s.depth + 1 < max_depth;
+    [[nodiscard]] bool can_split(const Segment& s) const {
+        return size_ + 2 <= items_.size() && s.depth + 1 < max_depth;
     }
     /// True while the segment's midpoint is a double strictly inside it:
     /// narrower segments are at the resolution of doubles.
