@@ -40,7 +40,7 @@ std::optional<std::filesystem::path> scene_file_of(const Options& options) {
 std::vector<std::string> render_valued_options() {
     std::vector<std::string> valued = {"--width",     "--height",    "--spp",    "--antialias", "--threads",
                                        "--method",    "--solver",    "--normals", "--partition", "--max-evaluations",
-                                       "--frames",    "--clock",     "--tile-log"};
+                                       "--frames",    "--clock",     "--tile-log", "--frustum-culling"};
     valued.insert(valued.end(), scene_input_options.begin(), scene_input_options.end());
     valued.insert(valued.end(), image_output_options.begin(), image_output_options.end());
     return valued;
@@ -99,6 +99,11 @@ RenderSettings RenderJob::settings_for(const Scene& scene) const {
     settings.normals = options.choice("--normals", "normal mode", all_normal_modes(), normal_mode_name);
     settings.partition = options.choice("--partition", "partition", all_partitions(), partition_name);
     settings.max_evaluations = options.count("--max-evaluations");
+    if (const auto culling = options.value("--frustum-culling")) {
+        if (*culling != "on" && *culling != "off")
+            throw UsageError("--frustum-culling takes on or off, not '" + *culling + "'");
+        settings.frustum_culling = *culling == "on";
+    }
     validate(settings);
     return settings;
 }

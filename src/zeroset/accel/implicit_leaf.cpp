@@ -108,6 +108,23 @@ void ImplicitLeaf::enter_cell(LeafScratch& leaf, const OctreeCell& cell, TraceSc
     leaf.h.set_base_tape(octree_->tape_of(cell), cell.can_prune);
 }
 
+double ImplicitLeaf::camera_ray_start(LeafScratch& leaf, const Ray& ray, TraceScratch& scratch) const {
+    const CameraFrustum& tile = *scratch.camera_frustum;
+    const int pixel = scratch.camera_pixel;
+    // Not one of the tile's rays: never expected, but nothing is culled then.
+    if (!(ray.origin == tile.origin) || pixel < 0 || pixel >= tile.pixels()) return 0.0;
+    if (!leaf.culled) leaf.culled = std::make_unique<CulledTiles>(tape_);
+    const std::vector<double>* depths = leaf.culled->first_depths(tile, region_.box(), scratch.counters);
+    if (!depths) return 0.0;
+    const double depth = (*depths)[static_cast<std::size_t>(pixel)];
+    if (depth == std::numeric_limits<double>::infinity()) return depth;
+    const double rate = tile.depth_rate(ray.dir);
+    if (!(rate > 0.0)) return 0.0;
+    // A hair short of the depth: the voxel in front, proven empty, was
+    // widened by far more than that (frustum_cull.cpp, box_pad).
+    return depth / rate * (1.0 - 1e-12);
+}
+
 HitResult ImplicitLeaf::first_hit_in_cells(LeafScratch& leaf, Span span, TraceScratch& scratch) const {
     // A ray that starts in the solid hits at once — also where that part of
     // the solid holds no surface, so no cell. NaN there fails, as unpartitioned.
@@ -183,8 +200,15 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
         }
         return std::nullopt;
     }
-    const HitResult hit =
-        octree_ ? first_hit_in_cells(leaf, *span, scratch) : leaf.finder->first_hit(leaf.h, *span, scratch.counters);
+    // A camera ray of a partitioned leaf starts where its tile's culling
+    // says the solid may begin: nothing of it lies in front of that.
+    Span searched = *span;
+    if (octree_ && scratch.camera_frustum) {
+        searched.t0 = std::max(searched.t0, camera_ray_start(leaf, ray, scratch));
+        if (!(searched.t0 <= searched.t1)) return std::nullopt;
+    }
+    const HitResult hit = octree_ ? first_hit_in_cells(leaf, searched, scratch)
+                                  : leaf.finder->first_hit(leaf.h, searched, scratch.counters);
     note_nan(leaf, nans, scratch);
     if (hit.status == HitStatus::Failed) ++scratch.counters.failed_queries;
     if (!hit.t) return std::nullopt;

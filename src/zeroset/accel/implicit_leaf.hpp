@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "zeroset/accel/frustum_cull.hpp"
 #include "zeroset/accel/octree.hpp"
 #include "zeroset/accel/primitive.hpp"
 #include "zeroset/expr/evaluator.hpp"
@@ -79,6 +80,7 @@ struct LeafScratch {
     Evaluator<double> value;
     std::optional<Evaluator<double>> clip;  // the clip's, when the leaf has one
     std::vector<double> roots;
+    std::unique_ptr<CulledTiles> culled;  // made for the first camera tile the leaf meets
 };
 
 class ImplicitLeaf final : public LeafPrimitive {
@@ -122,6 +124,11 @@ private:
     LeafScratch& scratch_for(TraceScratch& scratch) const;
     /// Counts the cell and makes its tape the ray function's base.
     void enter_cell(LeafScratch& leaf, const OctreeCell& cell, TraceScratch& scratch) const;
+    /// Where a camera ray can start to look for the solid: the depth its
+    /// pixel's voxels are proven empty to, culled once for the ray's whole
+    /// tile (accel/frustum_cull.hpp), as the ray's t; +∞ when the pixel's
+    /// rays all miss the solid.
+    double camera_ray_start(LeafScratch& leaf, const Ray& ray, TraceScratch& scratch) const;
     /// The method run cell by cell along the ray, front to back.
     HitResult first_hit_in_cells(LeafScratch& leaf, Span span, TraceScratch& scratch) const;
     /// The roots in the span into leaf.roots, over the cells when partitioned.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "zeroset/accel/trace_scratch.hpp"
+
 namespace zeroset {
 
 Instance::Instance(std::shared_ptr<const Primitive> child, const Mat4& to_parent, MaterialId material)
@@ -29,6 +31,10 @@ void Instance::lift(Hit& hit) const {
 }
 
 std::optional<Hit> Instance::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    // A camera ray's tile goes into the child's space with the ray.
+    std::optional<CameraFrustum> tile;
+    if (scratch.camera_frustum) tile = scratch.camera_frustum->in_child_space(to_child_);
+    const CameraFrustumScope scope(scratch, tile ? &*tile : nullptr);
     std::optional<Hit> hit = child_->first_hit(to_child(ray), t_min, t_max, scratch);
     if (hit) lift(*hit);
     return hit;

@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "zeroset/accel/camera_frustum.hpp"
 #include "zeroset/accel/surface_ref.hpp"
 #include "zeroset/trace/trace_counters.hpp"
 
@@ -37,6 +38,14 @@ public:
         Vec3d point;  // in the leaf's own space
     };
     std::optional<NanRecord> first_nan;
+
+    /// While a camera ray's first hit is traced: the rays of its image
+    /// tile, in the space of the primitive being asked (an instance carries
+    /// them into its child's, CameraFrustumScope), and the ray's pixel in
+    /// the tile; null for every other ray. Leaves that cull a tile's
+    /// frustum (accel/frustum_cull.hpp) read it.
+    const CameraFrustum* camera_frustum = nullptr;
+    int camera_pixel = 0;
 
     /// The scratch slot of leaf `id` (empty until the leaf fills it).
     std::unique_ptr<LeafScratch>& leaf(std::size_t id) { return leaves_.at(id); }
@@ -79,6 +88,22 @@ private:
     std::array<Occluder, 64> occluders_{};
     std::vector<std::unique_ptr<SpanList>> span_pool_;
     std::size_t spans_in_use_ = 0;
+};
+
+/// Sets the scratch's camera frustum for a scope, and puts the one before back.
+class CameraFrustumScope {
+public:
+    CameraFrustumScope(TraceScratch& scratch, const CameraFrustum* frustum)
+        : scratch_(scratch), before_(scratch.camera_frustum) {
+        scratch.camera_frustum = frustum;
+    }
+    ~CameraFrustumScope() { scratch_.camera_frustum = before_; }
+    CameraFrustumScope(const CameraFrustumScope&) = delete;
+    CameraFrustumScope& operator=(const CameraFrustumScope&) = delete;
+
+private:
+    TraceScratch& scratch_;
+    const CameraFrustum* before_;
 };
 
 }  // namespace zeroset

@@ -35,6 +35,22 @@ double CameraRays::footprint_radius() const {
     return pixel_side / std::sqrt(std::numbers::pi);
 }
 
+CameraFrustum CameraRays::frustum(int x0, int y0, int x1, int y1) const {
+    CameraFrustum f;
+    f.origin = eye_;
+    f.forward = forward_;
+    f.right = right_;
+    f.up = up_;
+    // As ray() maps a pixel position to u and v.
+    f.u0 = (2.0 * x0 / width_ - 1.0) * half_width_;
+    f.du = 2.0 * half_width_ / width_;
+    f.v0 = (1.0 - 2.0 * y0 / height_) * half_height_;
+    f.dv = -2.0 * half_height_ / height_;
+    f.columns = x1 - x0;
+    f.rows = y1 - y0;
+    return f;
+}
+
 Ray CameraRays::ray(int px, int py, double sx, double sy) const {
     const double u = (2.0 * (px + sx) / width_ - 1.0) * half_width_;
     const double v = (1.0 - 2.0 * (py + sy) / height_) * half_height_;

@@ -4,6 +4,7 @@
 
 #include <span>
 
+#include "zeroset/accel/camera_frustum.hpp"
 #include "zeroset/math/ray.hpp"
 #include "zeroset/scene/scene.hpp"
 
@@ -15,6 +16,8 @@ public:
 
     /// The ray through image position (px + sx, py + sy); y grows downwards.
     [[nodiscard]] Ray ray(int px, int py, double sx, double sy) const;
+    /// The rays of pixels [x0, x1) × [y0, y1), every sub-pixel offset.
+    [[nodiscard]] CameraFrustum frustum(int x0, int y0, int x1, int y1) const;
     /// The radius, per unit of distance along a ray, of the disk as large as
     /// one pixel (its area) at the image's centre: the footprint cone
     /// tracing widens a ray to (render/cone_tracer.hpp).

@@ -164,6 +164,8 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
     const TraceCounters before = tracer.counters();
     ShadingCounters shading;
     TileWork work;
+    const CameraFrustum frustum = camera_.frustum(tile.x0, tile.y0, tile.x1, tile.y1);
+    const CameraFrustum* culled = settings_.frustum_culling ? &frustum : nullptr;
     for (int py = tile.y0; py < tile.y1; ++py) {
         for (int px = tile.x0; px < tile.x1; ++px) {
             if (stopped()) break;
@@ -173,7 +175,8 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
                 const SubPixel sub = pixel_sample(px, py, s, spp);
                 const Ray ray = camera_.ray(px, py, sub.x, sub.y);
                 ++work.camera_rays;
-                const auto hit = tracer.closest_hit(ray, far);
+                const int pixel = (py - tile.y0) * frustum.columns + (px - tile.x0);
+                const auto hit = tracer.closest_hit(ray, far, culled, pixel);
                 Vec3d seen = scene_.background;
                 if (hit) {
                     ++work.hits;

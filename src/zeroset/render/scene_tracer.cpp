@@ -44,8 +44,14 @@ Vec3d SceneTracer::normal_at(const SurfaceRef& surface, const Ray& ray) {
     return dot(n, ray.dir) > 0.0 ? -n : n;
 }
 
-std::optional<SurfaceHit> SceneTracer::closest_hit(const Ray& ray, double t_max) {
-    const std::optional<Hit> hit = prepared_->root().first_hit(ray, 0.0, t_max, scratch_);
+std::optional<SurfaceHit> SceneTracer::closest_hit(const Ray& ray, double t_max, const CameraFrustum* tile,
+                                                   int pixel) {
+    std::optional<Hit> hit;
+    {
+        const CameraFrustumScope scope(scratch_, tile);
+        scratch_.camera_pixel = pixel;
+        hit = prepared_->root().first_hit(ray, 0.0, t_max, scratch_);
+    }
     if (!hit) return std::nullopt;
     const Vec3d point = ray.at(hit->t);
     return SurfaceHit{hit->t, point, hit->surface.to_local.transform_point(point), normal_at(hit->surface, ray),

@@ -25,8 +25,10 @@ class SceneTracer {
 public:
     explicit SceneTracer(const PreparedScene& prepared);
 
-    /// The nearest surface along the ray in [0, t_max].
-    std::optional<SurfaceHit> closest_hit(const Ray& ray, double t_max);
+    /// The nearest surface along the ray in [0, t_max]. A camera ray may
+    /// come with its image tile and its pixel there (TraceScratch::camera_frustum).
+    std::optional<SurfaceHit> closest_hit(const Ray& ray, double t_max, const CameraFrustum* tile = nullptr,
+                                          int pixel = 0);
     /// True when some surface lies on the ray in [0, t_max].
     bool occluded(const Ray& ray, double t_max);
     /// The hit's diffuse colour: its material's, or its pattern's there.

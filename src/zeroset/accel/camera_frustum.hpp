@@ -1,0 +1,52 @@
+// CameraFrustum: the camera rays of one image tile, for culling the tile's
+// empty space before any ray is traced (accel/frustum_cull.hpp; issue 10's
+// image-space culling, as fidget and MPR do it). Each ray of pixel (i, j)
+// of the tile leaves `origin` along a positive multiple of
+// forward + u·right + v·up, with (u, v) inside the pixel's rectangle of
+// the image plane; the ray's point at depth s is origin + s·(forward +
+// u·right + v·up). An instance carries the frustum into its child's space:
+// an affine map keeps the rays straight and their depths, so a leaf sees
+// the tile's rays in its own coordinates.
+#pragma once
+
+#include "zeroset/math/mat4.hpp"
+#include "zeroset/math/vec3.hpp"
+
+namespace zeroset {
+
+struct CameraFrustum {
+    Vec3d origin, forward, right, up;
+    // Pixel (i, j) covers u between u0 + i·du and u0 + (i + 1)·du, and v
+    // between v0 + j·dv and v0 + (j + 1)·dv (either step may be negative).
+    double u0 = 0.0, du = 0.0, v0 = 0.0, dv = 0.0;
+    int columns = 0, rows = 0;
+
+    bool operator==(const CameraFrustum&) const = default;
+
+    [[nodiscard]] int pixels() const { return columns * rows; }
+    /// The same rays in the space that `to_child` maps this one into.
+    [[nodiscard]] CameraFrustum in_child_space(const Mat4& to_child) const {
+        CameraFrustum c = *this;
+        c.origin = to_child.transform_point(origin);
+        c.forward = to_child.transform_vector(forward);
+        c.right = to_child.transform_vector(right);
+        c.up = to_child.transform_vector(up);
+        return c;
+    }
+    /// The point at depth s on the ray through (u, v).
+    [[nodiscard]] Vec3d at(double s, double u, double v) const { return origin + (forward + right * u + up * v) * s; }
+    /// The depth of point p: the s with p on the plane of the points at
+    /// depth s (the linear form that is 1 on `forward` and 0 on `right`
+    /// and `up`).
+    [[nodiscard]] double depth_of(const Vec3d& p) const { return dot(depth_form(), p - origin); }
+    /// How fast depth grows along direction d: a ray's depth is t times this.
+    [[nodiscard]] double depth_rate(const Vec3d& d) const { return dot(depth_form(), d); }
+
+private:
+    [[nodiscard]] Vec3d depth_form() const {
+        const Vec3d n = cross(right, up);
+        return n / dot(forward, n);
+    }
+};
+
+}  // namespace zeroset

@@ -1,0 +1,68 @@
+// Frustum culling (accel/frustum_cull.hpp) only moves where a camera ray
+// starts looking: every image is the same with it as without it — for
+// partitioned objects seen directly and through instances, cut by their
+// bounds, and with several rays a pixel.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "zeroset/render/renderer.hpp"
+#include "zeroset/scene/load_scene.hpp"
+
+namespace zeroset {
+namespace {
+
+// Sixteen spheres in a ring, blended with a torus: a tape of well over 64
+// clauses, which `auto` partitions. The second placement is the same shape
+// turned and squashed by an instance; the third object is cut by its bounds.
+std::string scene_text() {
+    std::string ring;
+    for (int k = 0; k < 16; ++k) {
+        const std::string a = std::to_string(k) + " * pi / 8";
+        const std::string sphere = "sqrt((x - 1.6 * cos(" + a + "))^2 + (y - 0.25 * sin(2 * " + a +
+                                   "))^2 + (z - 1.6 * sin(" + a + "))^2) - 0.22 - 0.08 * cos(" + std::to_string(k) + ")";
+        ring = k == 0 ? sphere : "min(" + ring + ", " + sphere + ")";
+    }
+    const std::string surface = "smooth_union(" + ring + ", sqrt((sqrt(x^2 + z^2) - 1.6)^2 + y^2) - 0.12, 0.1)";
+    return R"(
+image  { width 64  height 48  spp 2 }
+camera { from (0.4, 2.6, -6)  at (0, 0, 0)  fov 38 }
+light  { from (-4, 6, -5) }
+shape beads {
+  object { surface )" + surface + R"(  bounds box((-2, -0.6, -2), (2, 0.6, 2))  method sphere
+           material { color (0.8, 0.5, 0.3) } }
+}
+instance beads { translate (0, 0.4, 0) }
+instance beads { scale (0.6, 0.8, 1.1)  rotate (50, 20, 0)  translate (0.3, -0.9, 0.5) }
+object "cut" {
+  surface )" + surface + R"(
+  bounds box((-2, -0.1, -2), (0.5, 0.6, 2))
+  method sphere
+  rotate (0, 30, 0)  translate (0, -1.6, 1)
+}
+)";
+}
+
+TEST(FrustumCulling, ImagesAreTheSameWithAndWithoutIt) {
+    const Scene scene = parse_scene(scene_text(), "beads.zs", ".");
+    RenderSettings on;
+    on.width = scene.image.width;
+    on.height = scene.image.height;
+    on.samples_per_pixel = scene.image.samples_per_pixel;
+    on.threads = 2;
+    RenderSettings off = on;
+    off.frustum_culling = false;
+    const RenderResult culled = render(scene, on), traced = render(scene, off);
+    ASSERT_EQ(culled.stats.partitions.empty(), false);  // the objects are partitioned: culling applies
+    EXPECT_GT(culled.stats.hits, 1000u);                 // and much of the frame is surface
+    EXPECT_EQ(culled.stats.hits, traced.stats.hits);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < culled.image.pixels.size(); ++i)
+        if (!(culled.image.pixels[i] == traced.image.pixels[i])) ++differing;
+    EXPECT_EQ(differing, 0u);
+    // The culling did work: the rays spent fewer point evaluations.
+    EXPECT_LT(culled.stats.counters.point_evaluations, traced.stats.counters.point_evaluations);
+}
+
+}  // namespace
+}  // namespace zeroset
