@@ -57,20 +57,21 @@ Jet<Interval> RayFunction::enclose(double a, double b, TraceCounters& counters) 
     return j;
 }
 
-double RayFunction::lipschitz(double a, double b, TraceCounters& counters) {
+Interval RayFunction::slope(double a, double b, TraceCounters& counters) {
     ++counters.gradient_evaluations;
     // H′(t) = ∇f·x_d at a point of the segment, so the enclosure of ∇f·x_d
-    // over the segment's box bounds |H′| there: one derivative carried
-    // instead of three, and no |∇f|·|x_d| (Cauchy–Schwarz) in between.
+    // over the segment's box holds H′ there: one derivative carried instead
+    // of three, and no |∇f|·|x_d| (Cauchy–Schwarz) in between.
     const Box3 box = segment_box(a, b);
     const auto along = [&](int axis) {
         return DirectionalDual<Interval>(Interval(box.lo[axis], box.hi[axis]), Interval(ray_.dir[axis]));
     };
     const DirectionalDual<Interval> h = slope_(along(0), along(1), along(2));
-    if (h.v.is_empty()) return 0.0;  // undefined all over: nothing to step over
+    if (h.v.is_empty()) return Interval(0.0);  // undefined all over: nothing to step over
     // An empty derivative where the value is defined: the enclosure lost track of it.
-    const double bound = h.g.is_empty() ? std::numeric_limits<double>::infinity() : h.g.magnitude();
-    return bound == bound ? bound : std::numeric_limits<double>::infinity();
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    if (h.g.is_empty() || h.g.lo != h.g.lo || h.g.hi != h.g.hi) return {-inf, inf};
+    return h.g;
 }
 
 Box3 RayFunction::segment_box(double a, double b) const {

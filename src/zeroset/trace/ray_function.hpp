@@ -57,12 +57,14 @@ public:
     Interval enclose_value(double t, TraceCounters& counters);
     /// Enclosures of H, H′ and H″ over t ∈ [a, b].
     Jet<Interval> enclose(double a, double b, TraceCounters& counters);
-    /// A Lipschitz bound of H over t ∈ [a, b] (eq. 30 along the ray): the
-    /// largest |∇f·x_d| over the box around the segment, by a directional
-    /// dual (math/dual.hpp) — at most L·|x_d| with L bounding |∇f|, and about
-    /// a third of a gradient's cost; +∞ where it has no finite enclosure.
-    /// (enclose() bounds H′ too, but Jet<Interval> also carries H″.)
-    double lipschitz(double a, double b, TraceCounters& counters);
+    /// An enclosure of H′ over t ∈ [a, b]: of ∇f·x_d over the box around
+    /// the segment, by a directional dual (math/dual.hpp) — about a third of
+    /// a gradient's cost. Its magnitude is a Lipschitz bound of H there
+    /// (eq. 30 along the ray), at most L·|x_d| with L bounding |∇f|. [0, 0]
+    /// where H is undefined all over (nothing to step over); unbounded
+    /// where the derivative's enclosure is lost. (enclose() bounds H′ too,
+    /// but Jet<Interval> also carries H″.)
+    Interval slope(double a, double b, TraceCounters& counters);
 
     /// Prunes the tape to the axis-aligned box around the ray over [a, b]
     /// (expr/tape_pruner.hpp): the tape at `depth` − 1 (the full tape for

@@ -59,9 +59,15 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
         }
         if (value.lo > 0.0) continue;
 
-        const double lipschitz = h.lipschitz(a, b, counters);  // Lip H on [a, b]
+        // How fast side·H can fall on [a, b]: side·H(t) ≥ side·H(s) −
+        // descent·(t − s) for s ≤ t there. Only a fall can reach the
+        // surface, so this one-sided bound serves as Lip H does in Fig. 12,
+        // and is never larger; 0 when side·H cannot fall — a shadow ray
+        // leaving a lit surface, say — and then one step clears the segment.
+        const Interval slope = side > 0.0 ? h.slope(a, b, counters) : -h.slope(a, b, counters);
+        const double descent = std::max(0.0, -slope.lo);
         const bool splittable = b - a > 2.0 * eps && segments.can_split(segment);
-        if (!std::isfinite(lipschitz)) {
+        if (!std::isfinite(descent)) {
             if (splittable) {
                 segments.split(segment, a);
                 continue;
@@ -91,7 +97,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
             if (std::isnan(f)) return {};
             if (f <= 0.0) return crossing_before(t, eps);  // on or inside the surface
             clear_to = t;
-            if (f < lipschitz * eps) {
+            if (f < descent * eps) {
                 // Fig. 12, step 2a: the distance bound says the surface may be
                 // within ε. A sign change just ahead confirms it; otherwise L
                 // is too loose here, so tighten it by splitting what is left.
@@ -107,8 +113,9 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
                 if (t >= b) break;
                 continue;
             }
-            t += f / lipschitz;  // D(t) = H(t) / Lip H, at least ε
-            if (t >= b) break;   // this segment is clear
+            if (descent == 0.0) break;  // side·H > 0 at t and never falls: this segment is clear
+            t += f / descent;           // D(t) = H(t) / Lip H, at least ε
+            if (t >= b) break;          // this segment is clear
             if (steps >= settings_.steps_before_split && b - t > 2.0 * eps && segments.can_split(segment)) {
                 segments.split(segment, t);
                 break;
