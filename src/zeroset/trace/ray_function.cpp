@@ -32,12 +32,12 @@ void RayFunction::set_base_tape(const Tape& tape, bool can_prune) {
 double RayFunction::value(double t, TraceCounters& counters) {
     ++counters.point_evaluations;
     const Vec3d p = ray_.at(t);
-    return checked(point_(p.x, p.y, p.z), t, counters);
+    return checked(point_.on(bound_, tape_version_)(p.x, p.y, p.z), t, counters);
 }
 
 Jet<double> RayFunction::jet(double t, TraceCounters& counters) {
     ++counters.point_evaluations;
-    Jet<double> j = evaluate_along_ray(jet_, ray_.origin, ray_.dir, t);
+    Jet<double> j = evaluate_along_ray(jet_.on(bound_, tape_version_), ray_.origin, ray_.dir, t);
     j.v = checked(j.v, t, counters);
     return j;
 }
@@ -46,13 +46,13 @@ Interval RayFunction::enclose_value(double t, TraceCounters& counters) {
     ++counters.interval_evaluations;
     const Interval ti(t);
     const auto coordinate = [&ti](double o, double d) { return Interval(o) + Interval(d) * ti; };
-    return value_enclosure_(coordinate(ray_.origin.x, ray_.dir.x), coordinate(ray_.origin.y, ray_.dir.y),
+    return value_enclosure_.on(bound_, tape_version_)(coordinate(ray_.origin.x, ray_.dir.x), coordinate(ray_.origin.y, ray_.dir.y),
                             coordinate(ray_.origin.z, ray_.dir.z));
 }
 
 Jet<Interval> RayFunction::enclose(double a, double b, TraceCounters& counters) {
     ++counters.interval_evaluations;
-    Jet<Interval> j = evaluate_along_ray(enclosure_, ray_.origin, ray_.dir, Interval(a, b));
+    Jet<Interval> j = evaluate_along_ray(enclosure_.on(bound_, tape_version_), ray_.origin, ray_.dir, Interval(a, b));
     if (j.v.is_empty()) note_nan(ray_.at(0.5 * (a + b)), counters);  // undefined all over the segment
     return j;
 }
@@ -66,7 +66,7 @@ Interval RayFunction::slope(double a, double b, TraceCounters& counters) {
     const auto along = [&](int axis) {
         return DirectionalDual<Interval>(Interval(box.lo[axis], box.hi[axis]), Interval(ray_.dir[axis]));
     };
-    const DirectionalDual<Interval> h = slope_(along(0), along(1), along(2));
+    const DirectionalDual<Interval> h = slope_.on(bound_, tape_version_)(along(0), along(1), along(2));
     if (h.v.is_empty()) return Interval(0.0);  // undefined all over: nothing to step over
     // An empty derivative where the value is defined: the enclosure lost track of it.
     constexpr double inf = std::numeric_limits<double>::infinity();
@@ -92,11 +92,12 @@ Interval RayFunction::prune(std::size_t depth, double a, double b, TraceCounters
     // on this ray; without one (a first prune deeper than 0) the base tape.
     const Tape& parent = depth == 0 || depth > valid_depths_ ? *base_ : *tape_at_[depth - 1];
     const Interval f = pruner_->evaluate(parent, segment_box(a, b));
-    const Tape& tape = pruner_->simplified(pruned_[depth]);
+    // Where f keeps one sign the caller has no root to look for, and
+    // rarely evaluates anything: the parent's tape serves, unpruned.
+    const bool one_sign = f.lo > 0.0 || f.hi < 0.0;
+    const Tape& tape = one_sign ? parent : pruner_->simplified(pruned_[depth]);
     tape_at_[depth] = &tape;
-    // A tape rewritten in place has new constants; the parent kept as it is
-    // may be the one the evaluators already walk.
-    if (&tape == &pruned_[depth] || bound_ != &tape) use_tape(tape);
+    use_tape(tape, &tape == &pruned_[depth]);  // rewritten in place: new clauses and constants
     valid_depths_ = depth + 1;  // deeper entries belonged to other segments
     return f;
 }
@@ -104,15 +105,6 @@ Interval RayFunction::prune(std::size_t depth, double a, double b, TraceCounters
 void RayFunction::note_nan(const Vec3d& p, TraceCounters& counters) {
     ++counters.nan_evaluations;
     last_nan_point_ = p;
-}
-
-void RayFunction::use_tape(const Tape& tape) {
-    point_.rebind(tape);
-    jet_.rebind(tape);
-    value_enclosure_.rebind(tape);
-    enclosure_.rebind(tape);
-    slope_.rebind(tape);
-    bound_ = &tape;
 }
 
 }  // namespace zeroset

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -95,23 +96,48 @@ private:
         if (value != value) note_nan(ray_.at(t), counters);
         return value;
     }
-    /// Points every evaluator at `tape` (the full tape or a pruned one).
-    void use_tape(const Tape& tape);
+    /// Makes `tape` (the full tape or a pruned one) the one evaluations
+    /// walk; `rewritten` when its clauses changed in place since it was last
+    /// used.
+    void use_tape(const Tape& tape, bool rewritten = false) {
+        bound_ = &tape;
+        if (rewritten) ++tape_version_;
+    }
+
+    /// An evaluator, bound to the tape in use when it is next used: most
+    /// segments use one or two of the five, and a rebind loads every
+    /// constant of the tape.
+    template <class E>
+    struct LazilyBound {
+        explicit LazilyBound(const Tape& first) : evaluator(first), tape(&first) {}
+        E& on(const Tape* in_use, std::uint64_t in_use_version) {
+            if (tape != in_use || version != in_use_version) {
+                evaluator.rebind(*in_use);
+                tape = in_use;
+                version = in_use_version;
+            }
+            return evaluator;
+        }
+        E evaluator;
+        const Tape* tape;
+        std::uint64_t version = 0;
+    };
 
     const Tape* tape_;
     Vec3d last_nan_point_{};
     Ray ray_{};
     double dir_length_ = 1.0;
-    Evaluator<double> point_;
-    Evaluator<Jet<double>> jet_;
-    Evaluator<Interval> value_enclosure_;
-    Evaluator<Jet<Interval>> enclosure_;
-    Evaluator<DirectionalDual<Interval>> slope_;
+    LazilyBound<Evaluator<double>> point_;
+    LazilyBound<Evaluator<Jet<double>>> jet_;
+    LazilyBound<Evaluator<Interval>> value_enclosure_;
+    LazilyBound<Evaluator<Jet<Interval>>> enclosure_;
+    LazilyBound<Evaluator<DirectionalDual<Interval>>> slope_;
     std::optional<TapePruner> pruner_;  // made on the first prune()
     std::vector<Tape> pruned_;          // pruned_[d]: the tape pruned at depth d, if any
     std::vector<const Tape*> tape_at_;  // the tape in use at depth d: pruned_[d] or its parent's
     std::size_t valid_depths_ = 0;      // tape_at_[d] belongs to this ray's current segments for d < this
-    const Tape* bound_;                 // the tape the evaluators walk
+    const Tape* bound_;                 // the tape evaluations walk
+    std::uint64_t tape_version_ = 0;    // counts rewrites of pruned tapes in place
     const Tape* base_;                  // what depth 0 prunes from: the full tape or a cell's
     bool can_prune_;                    // the full tape has a min or max
     bool base_can_prune_;               // the base tape has one
