@@ -17,6 +17,7 @@ RayFunction::RayFunction(const Tape& tape)
 
 void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;
+    last_value_t_ = std::numeric_limits<double>::quiet_NaN();
     const double length = std::hypot(ray.dir.x, ray.dir.y, ray.dir.z);  // no underflow for tiny directions
     dir_length_ = length > 0.0 ? rounding::up(length) : 0.0;
     reset_base_tape();
@@ -30,9 +31,16 @@ void RayFunction::set_base_tape(const Tape& tape, bool can_prune) {
 }
 
 double RayFunction::value(double t, TraceCounters& counters) {
+    // Asked again at the same t — where one octree cell's method starts as
+    // the last one ended, or where a march starts after the method looked —
+    // H is the same: every tape pruned from the full one computes the same
+    // value there (pruning only drops the losing sides of a min or max).
+    if (t == last_value_t_) return last_value_;
     ++counters.point_evaluations;
     const Vec3d p = ray_.at(t);
-    return checked(point_.on(bound_, tape_version_)(p.x, p.y, p.z), t, counters);
+    const double h = checked(point_.on(bound_, tape_version_)(p.x, p.y, p.z), t, counters);
+    if (h == h) last_value_t_ = t, last_value_ = h;  // a NaN is evaluated (and recorded) again
+    return h;
 }
 
 Jet<double> RayFunction::jet(double t, TraceCounters& counters) {

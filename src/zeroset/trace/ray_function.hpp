@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -136,6 +137,8 @@ private:
     std::vector<Tape> pruned_;          // pruned_[d]: the tape pruned at depth d, if any
     std::vector<const Tape*> tape_at_;  // the tape in use at depth d: pruned_[d] or its parent's
     std::size_t valid_depths_ = 0;      // tape_at_[d] belongs to this ray's current segments for d < this
+    double last_value_t_ = std::numeric_limits<double>::quiet_NaN();  // where value() last gave a number …
+    double last_value_ = 0.0;                                            // … and the number
     const Tape* bound_;                 // the tape evaluations walk
     std::uint64_t tape_version_ = 0;    // counts rewrites of pruned tapes in place
     const Tape* base_;                  // what depth 0 prunes from: the full tape or a cell's
