@@ -109,12 +109,17 @@ bool FrustumCuller::settled(const Voxel& v) const {
     return true;
 }
 
-void FrustumCuller::descend(const Voxel& v, const Tape& tape, int level) {
+bool FrustumCuller::is_leaf(const Voxel& v, int level) const {
     const CameraFrustum& f = frustum_;
     const bool one_pixel = v.i1 - v.i0 == 1 && v.j1 - v.j0 == 1;
     const bool thin = (v.s1 - v.s0) * length(f.forward) <=
                       v.s1 * std::max(std::abs(f.du) * length(f.right), std::abs(f.dv) * length(f.up));
-    if ((one_pixel && thin) || level == max_levels) {
+    return (one_pixel && thin) || level == max_levels;
+}
+
+void FrustumCuller::descend(const Voxel& v, const Tape& tape, int level) {
+    const CameraFrustum& f = frustum_;
+    if (is_leaf(v, level)) {
         for (int j = v.j0; j < v.j1; ++j)
             for (int i = v.i0; i < v.i1; ++i) {
                 double& depth = (*first_depth_)[static_cast<std::size_t>(j * f.columns + i)];
@@ -143,8 +148,11 @@ void FrustumCuller::descend(const Voxel& v, const Tape& tape, int level) {
         if (!inside[kk]) continue;
         ++counters_->interval_evaluations;
         // Not proven empty (a NaN enclosure proves nothing): pruned now, as
-        // the walks below overwrite what the pruner recorded.
-        if (!(enclosures.lane(k).lo > 0.0)) below[kk] = &pruner_.simplified(pruned_[static_cast<std::size_t>(level)][kk], k);
+        // the walks below overwrite what the pruner recorded — unless it is
+        // a leaf, whose tape is never walked.
+        if (enclosures.lane(k).lo > 0.0) continue;
+        below[kk] = is_leaf(parts[kk], level + 1) ? &tape
+                                                  : &pruner_.simplified(pruned_[static_cast<std::size_t>(level)][kk], k);
     }
     for (int k = 0; k < count; ++k) {
         const auto kk = static_cast<std::size_t>(k);

@@ -54,6 +54,8 @@ private:
     [[nodiscard]] Box3 box_of(const Voxel& v) const;
     /// The voxel's four parts, and how many of them there are.
     [[nodiscard]] int split(const Voxel& v, std::array<Voxel, TapePruner::lanes>& parts) const;
+    /// Whether the voxel, `level` splits below the tile, is split no more.
+    [[nodiscard]] bool is_leaf(const Voxel& v, int level) const;
     /// Whether every pixel of the voxel already has its first depth.
     [[nodiscard]] bool settled(const Voxel& v) const;
     /// The voxel's pixels, not proven empty anywhere in front of it: the
