@@ -20,6 +20,12 @@ constexpr double unreached = std::numeric_limits<double>::infinity();
 // voxel's box.
 constexpr double box_pad = 1e-10;
 
+// A pixel's voxels are split in depth until they are this many pixels deep:
+// finer ones cost more culling than the rays' steps they save (bear.vm at
+// 512²: 2.2 M evaluations at 1 pixel, 1.3 M at 4 — fewer interval
+// evaluations, a few more point ones).
+constexpr double leaf_depth_in_pixels = 4.0;
+
 double largest_magnitude(const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
 }  // namespace
@@ -113,7 +119,8 @@ bool FrustumCuller::is_leaf(const Voxel& v, int level) const {
     const CameraFrustum& f = frustum_;
     const bool one_pixel = v.i1 - v.i0 == 1 && v.j1 - v.j0 == 1;
     const bool thin = (v.s1 - v.s0) * length(f.forward) <=
-                      v.s1 * std::max(std::abs(f.du) * length(f.right), std::abs(f.dv) * length(f.up));
+                      leaf_depth_in_pixels * v.s1 *
+                          std::max(std::abs(f.du) * length(f.right), std::abs(f.dv) * length(f.up));
     return (one_pixel && thin) || level == max_levels;
 }
 

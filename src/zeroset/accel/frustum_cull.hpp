@@ -11,7 +11,7 @@
 // slabs in depth while it is deeper than wide, else into four across the
 // image; each split is one walk of four interval lanes over the tape pruned
 // to the voxel (expr/tape_pruner.hpp), so the tape shortens as the voxels
-// shrink. Splitting stops at single pixels about one pixel deep.
+// shrink. Splitting stops at single pixels a few pixels deep.
 #pragma once
 
 #include <array>
