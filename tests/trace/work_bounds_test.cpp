@@ -36,7 +36,7 @@ TEST(WorkBounds, EverySubdividingMethodGivesUpPastMaxSegments) {
             (run(mid).status == HitStatus::Ok ? hi : lo) = mid;
         }
         const HitResult at = run(hi), below = run(hi - 1);
-        EXPECT_GT(hi, 2) << method_name(method) << ": the ray needs a few segments";
+        EXPECT_GE(hi, 2) << method_name(method) << ": the ray needs more than one segment";
         EXPECT_EQ(at.status, HitStatus::Ok) << method_name(method);
         EXPECT_NEAR(at.t.value_or(NAN), expected, 1e-12) << method_name(method);
         EXPECT_EQ(below.status, HitStatus::Failed) << method_name(method) << " with " << hi - 1 << " segments";

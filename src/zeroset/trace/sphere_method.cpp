@@ -22,7 +22,7 @@ Crossing SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCou
     // The surface is crossed in [t, t + 2ε]: refine to full precision. With
     // no sign change before t1, the crossing lies just past the span. (ε as
     // the march took it: at the span's far end, its largest.)
-    const double end = std::min(*t + 2.0 * tracer_.step_epsilon(h, far_end(span)), span.t1);
+    const double end = std::min(marched.end.value_or(*t + 2.0 * tracer_.step_epsilon(h, far_end(span))), span.t1);
     return {refine_sign_change(h, *t, end, counters)};
 }
 

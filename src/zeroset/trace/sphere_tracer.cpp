@@ -10,6 +10,13 @@
 
 namespace zeroset {
 
+namespace {
+// Secant probes a segment may make (each costs a point value, and a slope
+// enclosure when it finds a sign change): enough for a ray closing in on a
+// surface, few enough that a ray grazing one wastes little.
+constexpr int max_probes = 3;
+}  // namespace
+
 double SphereTracer::step_epsilon(const RayFunction& h, double t) const {
     const double ulp = std::abs(std::nextafter(t, std::numeric_limits<double>::infinity()) - t);
     return std::max(h.to_t(settings_.epsilon), 4.0 * ulp);
@@ -92,11 +99,33 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
             continue;
         }
         double t = a;
+        double t_before = t, f_before = std::numeric_limits<double>::quiet_NaN();  // the step before, if any
+        int probes_left = max_probes;
         for (int steps = 0;; ++steps) {
             const double f = value_at(t);
             if (std::isnan(f)) return {};
             if (f <= 0.0) return crossing_before(t, eps);  // on or inside the surface
             clear_to = t;
+            // Closing in by steps is slow where the bound is loose: the last
+            // two steps' secant predicts where H reaches 0 (Newton's eq. 22
+            // with a difference slope). A sign change a little past it, on a
+            // stretch where side·H is proven strictly decreasing, brackets
+            // its one root there — the first, as all before t is cleared.
+            if (probes_left > 0 && f < f_before) {
+                const double secant = (f - f_before) / (t - t_before);
+                const double reach = 1.25 * (-f / secant);
+                if (reach > 3.0 * f / descent && t + reach <= b) {
+                    --probes_left;
+                    const double probe = t + reach;
+                    const double f_probe = value_at(probe);
+                    if (std::isnan(f_probe)) return {};
+                    if (f_probe <= 0.0) {
+                        const Interval fall = side > 0.0 ? h.slope(t, probe, counters) : -h.slope(t, probe, counters);
+                        if (fall.hi < 0.0) return {t, false, probe};
+                    }
+                }
+            }
+            t_before = t, f_before = f;
             if (f < descent * eps) {
                 // Fig. 12, step 2a: the distance bound says the surface may be
                 // within ε. A sign change just ahead confirms it; otherwise L

@@ -16,7 +16,11 @@
 //     (RayFunction::prune), and the halves of a split segment prune their
 //     parent's tape further, so deep in a CSG model a step walks a few clauses;
 //   - a hit is reported only where the distance bound drops below ε and f
-//     changes sign within 2ε ahead.
+//     changes sign within 2ε ahead — or, sooner, where a probe at the
+//     secant's zero (from the last two steps) finds f changed sign on a
+//     stretch where f is proven strictly monotone (an enclosure of H′ with
+//     one sign): that stretch holds exactly one root, and all before it is
+//     cleared, so it is the first.
 // ε is a length in space; along the ray it is ε/|x_d|, and never less than a
 // few units in the last place of t, so that every step moves t. Every step
 // stays in a segment whose L holds, so the first hit is never stepped over;
@@ -44,19 +48,22 @@ struct SphereTraceSettings {
 };
 
 /// Where a march ended: at a crossing, at none, or given up (past
-/// max_segments; also nothing when it met a NaN, which h records).
+/// max_segments; also nothing when it met a NaN, which h records). The
+/// crossing lies in [t, end] when end is given, else in [t, t + 2ε].
 struct Crossing {
     std::optional<double> t;
     bool gave_up = false;
+    std::optional<double> end = std::nullopt;
 };
 
 class SphereTracer {
 public:
     explicit SphereTracer(SphereTraceSettings settings) : settings_(settings) {}
 
-    /// The smallest t in span at which the ray meets the surface, to within
-    /// ε; nothing if it does not. The surface is crossed in [t, t + 2·ε_t],
-    /// ε_t = step_epsilon(h, …).
+    /// Where the ray first meets the surface in span: nothing if it does
+    /// not; else it crosses the surface in [t, t + 2·ε_t], ε_t =
+    /// step_epsilon(h, …), or in [t, end] when end is given — a bracket
+    /// holding that one root, which the caller refines.
     Crossing first_hit(RayFunction& h, Span span, TraceCounters& counters) const {
         return first_crossing(h, span, 1.0, counters);
     }
