@@ -31,10 +31,18 @@ void Instance::lift(Hit& hit) const {
 }
 
 std::optional<Hit> Instance::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    if (scratch.camera_frustum) return first_hit_in_tile(ray, t_min, t_max, scratch);
+    std::optional<Hit> hit = child_->first_hit(to_child(ray), t_min, t_max, scratch);
+    if (hit) lift(*hit);
+    return hit;
+}
+
+// Out of line, so that rays without a tile (most, in most scenes) pay nothing for it.
+[[gnu::noinline]] std::optional<Hit> Instance::first_hit_in_tile(const Ray& ray, double t_min, double t_max,
+                                                                 TraceScratch& scratch) const {
     // A camera ray's tile goes into the child's space with the ray.
-    std::optional<CameraFrustum> tile;
-    if (scratch.camera_frustum) tile = scratch.camera_frustum->in_child_space(to_child_);
-    const CameraFrustumScope scope(scratch, tile ? &*tile : nullptr);
+    const CameraFrustum tile = scratch.camera_frustum->in_child_space(to_child_);
+    const CameraFrustumScope scope(scratch, &tile);
     std::optional<Hit> hit = child_->first_hit(to_child(ray), t_min, t_max, scratch);
     if (hit) lift(*hit);
     return hit;

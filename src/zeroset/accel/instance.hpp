@@ -30,6 +30,8 @@ public:
 
 private:
     [[nodiscard]] Ray to_child(const Ray& ray) const;
+    /// first_hit() for a camera ray that comes with its tile (TraceScratch::camera_frustum).
+    std::optional<Hit> first_hit_in_tile(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const;
     /// A hit in the child's terms, in the instance's.
     void lift(Hit& hit) const;
 

@@ -89,6 +89,9 @@ FrameRender::FrameRender(const Scene& scene, const RenderSettings& settings)
       tiles_(image_tiles(settings.width, settings.height)),
       budget_(settings.max_evaluations.value_or(default_evaluation_budget(settings))) {
     if (settings.cone_antialiasing) distance_.emplace(scene);
+    cull_camera_tiles_ = settings.frustum_culling &&
+                         std::any_of(prepared_.leaves().begin(), prepared_.leaves().end(),
+                                     [](const ImplicitLeaf* leaf) { return leaf->octree() != nullptr; });
     prepare_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
 }
 
@@ -165,7 +168,7 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
     ShadingCounters shading;
     TileWork work;
     const CameraFrustum frustum = camera_.frustum(tile.x0, tile.y0, tile.x1, tile.y1);
-    const CameraFrustum* culled = settings_.frustum_culling ? &frustum : nullptr;
+    const CameraFrustum* culled = cull_camera_tiles_ ? &frustum : nullptr;
     for (int py = tile.y0; py < tile.y1; ++py) {
         for (int px = tile.x0; px < tile.x1; ++px) {
             if (stopped()) break;

@@ -95,6 +95,9 @@ private:
     RenderSettings settings_;
     PreparedScene prepared_;
     CameraRays camera_;
+    // Whether camera tiles are culled: asked for, and some leaf is
+    // partitioned (only those cull; for the others a tile would only cost).
+    bool cull_camera_tiles_ = false;
     std::optional<SceneDistance> distance_;
     std::vector<TileRect> tiles_;
     double prepare_seconds_ = 0.0;

@@ -46,12 +46,12 @@ Vec3d SceneTracer::normal_at(const SurfaceRef& surface, const Ray& ray) {
 
 std::optional<SurfaceHit> SceneTracer::closest_hit(const Ray& ray, double t_max, const CameraFrustum* tile,
                                                    int pixel) {
-    std::optional<Hit> hit;
-    {
+    // Made in place (a Hit is large): the tile is set for the query only.
+    const std::optional<Hit> hit = [&] {
         const CameraFrustumScope scope(scratch_, tile);
         scratch_.camera_pixel = pixel;
-        hit = prepared_->root().first_hit(ray, 0.0, t_max, scratch_);
-    }
+        return prepared_->root().first_hit(ray, 0.0, t_max, scratch_);
+    }();
     if (!hit) return std::nullopt;
     const Vec3d point = ray.at(hit->t);
     return SurfaceHit{hit->t, point, hit->surface.to_local.transform_point(point), normal_at(hit->surface, ray),
