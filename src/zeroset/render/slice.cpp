@@ -115,7 +115,7 @@ float decided_value(const Interval& f) {
 /// One thread's tools: the pruner, a tape per depth, the batch evaluator.
 class TileVisitor {
 public:
-    TileVisitor(const Tape& full, const PixelGrid& grid, const SliceSettings& settings, std::vector<float>& values)
+    TileVisitor(const Tape& full, const PixelGrid& grid, const SliceSettings& settings, LargeBuffer<float>& values)
         : grid_(grid), size_(settings.size), every_pixel_(settings.every_pixel), values_(values), pruner_(full),
           batch_(full), pruned_(max_depth) {}
 
@@ -214,7 +214,7 @@ private:
     const PixelGrid& grid_;
     int size_;
     bool every_pixel_;
-    std::vector<float>& values_;
+    LargeBuffer<float>& values_;
     TapePruner pruner_;
     BatchEvaluator<float> batch_;
     std::vector<std::array<Tape, TapePruner::lanes>> pruned_;  // pruned_[d]: the tapes of the sub-tiles of the tile at depth d
