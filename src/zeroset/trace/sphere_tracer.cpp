@@ -24,6 +24,11 @@ double SphereTracer::step_epsilon(const RayFunction& h, double t) const {
 
 Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounters& counters) const {
     const auto value_at = [&](double t) { return side * h.value(t, counters); };
+    // An enclosure of (side·H)′ over [from, to].
+    const auto side_slope = [&](double from, double to) {
+        const Interval slope = h.slope(from, to, counters);
+        return side > 0.0 ? slope : -slope;
+    };
     // The last point marched to where f > 0: the ray is clear up to it.
     double clear_to = span.t0;
     // f ≤ 0 at t, reached by a step or as a segment's start: the crossing is
@@ -71,8 +76,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
         // surface, so this one-sided bound serves as Lip H does in Fig. 12,
         // and is never larger; 0 when side·H cannot fall — a shadow ray
         // leaving a lit surface, say — and then one step clears the segment.
-        const Interval slope = side > 0.0 ? h.slope(a, b, counters) : -h.slope(a, b, counters);
-        const double descent = std::max(0.0, -slope.lo);
+        const double descent = std::max(0.0, -side_slope(a, b).lo);
         const bool splittable = b - a > 2.0 * eps && segments.can_split(segment);
         if (!std::isfinite(descent)) {
             if (splittable) {
@@ -120,8 +124,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
                     const double f_probe = value_at(probe);
                     if (std::isnan(f_probe)) return {};
                     if (f_probe <= 0.0) {
-                        const Interval fall = side > 0.0 ? h.slope(t, probe, counters) : -h.slope(t, probe, counters);
-                        if (fall.hi < 0.0) return {t, false, probe};
+                        if (side_slope(t, probe).hi < 0.0) return {t, false, probe};
                     }
                 }
             }

@@ -1,11 +1,11 @@
 // Sphere tracing (the survey's §5.2, Fig. 12): march along the ray in steps
-// D(t) = H(t)/L that cannot pass the surface, where L bounds |H′| over the
-// part of the ray the step stays in.
+// D(t) = H(t)/L that cannot pass the surface, where L bounds how fast H can
+// fall (−H′, at most |H′|) over the part of the ray the step stays in.
 //
-// L is never a user parameter. It is |x_d| times the interval enclosure of
-// |∇f| over the box around the segment being marched (RayFunction::lipschitz,
-// eq. 30): |H′| = |x_d·∇f| ≤ |∇f|·|x_d|, so it holds for a direction of any
-// length — as the rays a transformed primitive passes on have. The span inside the object's bounds is the first
+// L is never a user parameter. It comes from the interval enclosure of
+// H′ = x_d·∇f over the box around the segment being marched
+// (RayFunction::slope, eq. 30 along the ray), so it holds for a direction of
+// any length — as the rays a transformed primitive passes on have. The span inside the object's bounds is the first
 // segment; a segment whose bound is infinite or loose (many steps without a
 // hit) is split in two and each half gets its own, tighter L. On every
 // segment:
