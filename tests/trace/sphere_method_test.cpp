@@ -133,3 +133,41 @@ TEST(SphereMethod, AllHitsGoOnPastAShortChord) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+// Sheets thinner than ε: a step may land inside one (then the bracket must
+// end where f ≤ 0, not 2ε on, past the sheet), or step onto an ε-segment
+// positive at both ends with the sheet inside (then interval isolation must
+// find it). Either way sphere tracing finds the root the interval method
+// finds, on every ray.
+TEST(SphereMethod, FindsSheetsThinnerThanEpsilon) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const Bounds bounds = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+    const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
+    int found = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3d n = normalize(Vec3d{u(rng), u(rng), u(rng)});
+        const double half_width = (0.05 + 0.45 * (u(rng) + 1.0)) * settings.sphere_epsilon;  // 0.05ε … 0.95ε
+        const Tape tape(abs(n.x * var_x() + n.y * var_y() + n.z * var_z() - 0.3 * u(rng)) - half_width);
+        const Vec3d from = 3.0 * normalize(Vec3d{u(rng), u(rng), u(rng)});
+        const Ray ray{from, normalize(Vec3d{0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)} - from)};
+        const auto span = bounds.clip(ray, 0.0, INFINITY);
+        if (!span) continue;
+        RayFunction h(tape);
+        h.set_ray(ray);
+        TraceCounters counters;
+        const HitResult interval = make_root_finder(Method::Interval, tape, settings)->first_hit(h, *span, counters);
+        const HitResult sphere = make_root_finder(Method::Sphere, tape, settings)->first_hit(h, *span, counters);
+        ASSERT_EQ(sphere.t.has_value(), interval.t.has_value()) << "ray " << i;
+        if (!sphere.t) continue;
+        ++found;
+        EXPECT_NEAR(*sphere.t, *interval.t, 1e-9) << "ray " << i;
+    }
+    EXPECT_GT(found, 300);
+}
+
+}  // namespace
+}  // namespace zeroset

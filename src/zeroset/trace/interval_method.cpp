@@ -20,7 +20,8 @@ Interval mean_value_form(RayFunction& h, const Segment& s, const Interval& slope
 
 }  // namespace
 
-HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) {
+HitStatus IntervalMethod::isolate_segments(RayFunction& h, Span span, bool prune, TraceCounters& counters,
+                                           RootVisitor visit) {
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
     const std::uint64_t nans = counters.nan_evaluations;
@@ -28,7 +29,7 @@ HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& coun
         if (visited == settings_.max_segments || counters.nan_evaluations != nans || counters.over_limit())
             return HitStatus::Failed;
         const Segment s = segments.pop();
-        if (!narrow(h, s, counters)) continue;  // and the tape pruned to s
+        if (prune && !narrow(h, s, counters)) continue;  // and the tape pruned to s
         const Jet<Interval> e = h.enclose(s.a, s.b, counters);
         if (settings_.log) settings_.log->interval_boxes.push_back({s.a, s.b, e.v.lo, e.v.hi});
         if (e.v.is_empty()) return HitStatus::Failed;  // H is undefined (NaN) over the segment
@@ -48,6 +49,17 @@ HitStatus IntervalMethod::isolate(RayFunction& h, Span span, TraceCounters& coun
             if (!visit(*hit)) return HitStatus::Ok;
     }
     return HitStatus::NoHit;
+}
+
+HitResult IntervalMethod::first_root_on_tape_in_use(RayFunction& h, Span span, TraceCounters& counters) {
+    std::optional<double> first;
+    auto take_first = [&first](double t) {
+        first = t;
+        return false;
+    };
+    const HitStatus status = isolate_segments(h, span, false, counters, take_first);
+    if (first) return {first, HitStatus::Ok};
+    return {std::nullopt, status};
 }
 
 }  // namespace zeroset

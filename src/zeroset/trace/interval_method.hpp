@@ -17,8 +17,21 @@ class IntervalMethod : public IsolatingMethod {
 public:
     explicit IntervalMethod(const RootFinderSettings& settings) : IsolatingMethod(settings) {}
 
+    /// The first root of H in the span by the same isolation, walking the
+    /// tape h has in use now without pruning it: for a caller that holds a
+    /// tape pruned to a box around the span already — sphere tracing's
+    /// ε-segments (sphere_tracer.hpp). Ok with the root (or a tangent hit at
+    /// the tangent width), NoHit, or Failed (NaN, a budget spent).
+    HitResult first_root_on_tape_in_use(RayFunction& h, Span span, TraceCounters& counters);
+
 protected:
-    HitStatus isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) override;
+    HitStatus isolate(RayFunction& h, Span span, TraceCounters& counters, RootVisitor visit) override {
+        return isolate_segments(h, span, true, counters, visit);
+    }
+
+private:
+    /// Fig. 9 over the span; each segment's tape pruned to it when `prune`.
+    HitStatus isolate_segments(RayFunction& h, Span span, bool prune, TraceCounters& counters, RootVisitor visit);
 };
 
 }  // namespace zeroset

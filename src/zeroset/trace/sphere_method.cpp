@@ -2,6 +2,8 @@
 #include "zeroset/trace/sphere_method.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "zeroset/trace/refine_bracket.hpp"
 
@@ -12,18 +14,20 @@ double far_end(Span span) { return std::max(std::abs(span.t0), std::abs(span.t1)
 }  // namespace
 
 SphereMethod::SphereMethod(const RootFinderSettings& settings)
-    : tracer_({settings.sphere_epsilon, 16, settings.max_segments}), max_hits_(settings.max_hits) {}
+    : tracer_({settings.sphere_epsilon, 16, settings.max_segments, settings.tangent_width}),
+      max_hits_(settings.max_hits) {}
 
 Crossing SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCounters& counters) {
     const std::uint64_t nans = counters.nan_evaluations;
     const Crossing marched = tracer_.first_crossing(h, span, side, counters);
     const std::optional<double> t = marched.t;
     if (!t || counters.nan_evaluations != nans) return {std::nullopt, marched.gave_up};
-    // The surface is crossed in [t, t + 2ε]: refine to full precision. With
-    // no sign change before t1, the crossing lies just past the span. (ε as
-    // the march took it: at the span's far end, its largest.)
-    const double end = std::min(marched.end.value_or(*t + 2.0 * tracer_.step_epsilon(h, far_end(span))), span.t1);
-    return {refine_sign_change(h, *t, end, counters)};
+    if (marched.exact) return marched;
+    // The surface is crossed in [t, end]: refine to full precision. With no
+    // sign change before t1, the crossing lies just past the span.
+    const double end = std::min(marched.end, span.t1);
+    const std::optional<double> root = refine_sign_change(h, *t, end, counters);
+    return {root, false, root.value_or(0.0), true};
 }
 
 HitResult SphereMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "zeroset/trace/interval_method.hpp"
 #include "zeroset/trace/refine_bracket.hpp"
 #include "zeroset/trace/segment_stack.hpp"
 
@@ -37,7 +38,8 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
     // beyond: one probe ε back confirms it; else bisection narrows the
     // bracket to 2ε, which the caller refines.
     const auto crossing_before = [&](double t, double eps) -> Crossing {
-        if (!(t > clear_to)) return {t};
+        // f ≤ 0 where the march starts, or just past a pole: a root only if f is 0 there.
+        if (!(t > clear_to)) return {t, false, t};
         h.use_full_tape();  // the probes may leave the segment's box, where its pruned tape does not hold
         double lo = clear_to, hi = t;
         if (const double back = t - eps; back > lo) {
@@ -51,7 +53,23 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
             if (std::isnan(f)) return {};
             (f > 0.0 ? lo : hi) = mid;
         }
-        return {lo};
+        return {lo, false, hi};
+    };
+    // An ε-segment [from, to] where f > 0 at both ends, which steps cannot
+    // settle: a graze or a sheet thinner than 2ε may dip below 0 inside.
+    // Mitchell's isolation settles it down to the tangent width, on the
+    // tape of the segment it lies in (whose box reaches 2ε past its end).
+    const auto root_in_gap = [&](double from, double to) -> std::optional<Crossing> {
+        const std::uint64_t nans = counters.nan_evaluations;
+        RootFinderSettings isolating;
+        isolating.tangent_width = settings_.tangent_width;
+        isolating.max_segments = settings_.max_segments;
+        IntervalMethod isolation(isolating);
+        const HitResult root = isolation.first_root_on_tape_in_use(h, {from, to}, counters);
+        if (counters.nan_evaluations != nans) return Crossing{};
+        if (root.status == HitStatus::Failed) return Crossing{std::nullopt, true};
+        if (root.t) return Crossing{root.t, false, *root.t, true};
+        return std::nullopt;
     };
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
@@ -98,8 +116,9 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
                     clear_to = b;  // the sign changed across a pole, not a root: never look back past it
                     continue;
                 }
-                return {a};  // the crossing is in [a, b], within the 2ε the caller refines
+                return {a, false, b};  // an ε-segment
             }
+            if (const auto gap = root_in_gap(a, b)) return *gap;
             continue;
         }
         double t = a;
@@ -136,12 +155,13 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
                 const double ahead = t + 2.0 * eps;
                 const double f_ahead = value_at(ahead);
                 if (std::isnan(f_ahead)) return {};
-                if (f_ahead <= 0.0) return {t};  // the crossing is in [t, t + 2ε]
+                if (f_ahead <= 0.0) return {t, false, ahead};
+                if (const auto gap = root_in_gap(t, ahead)) return *gap;
                 if (b - ahead > 2.0 * eps && segments.can_split(segment)) {
                     segments.split(segment, ahead);
                     break;
                 }
-                t = ahead;  // an ε-segment positive at both ends: at most a sub-ε graze
+                t = ahead;
                 if (t >= b) break;
                 continue;
             }

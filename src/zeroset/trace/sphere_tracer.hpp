@@ -45,15 +45,23 @@ struct SphereTraceSettings {
     int steps_before_split = 16;
     /// Segments one march may visit before it gives up.
     long max_segments = 1L << 20;
+    /// The width (a length in space) down to which an ε-segment that steps
+    /// cannot settle is isolated by intervals; a part this narrow that may
+    /// still hold a root is a tangent hit, as in the interval method.
+    double tangent_width = 1e-10;
 };
 
 /// Where a march ended: at a crossing, at none, or given up (past
 /// max_segments; also nothing when it met a NaN, which h records). The
-/// crossing lies in [t, end] when end is given, else in [t, t + 2ε].
+/// crossing lies in [t, end], where side·f > 0 at t and ≤ 0 at end: a
+/// bracket at most 2ε long, or one proven to hold a single root (or, where
+/// the march starts on f ≤ 0, [t, t]: a root only if f is 0 there). When
+/// `exact`, t is the root itself, found by interval isolation, and end = t.
 struct Crossing {
     std::optional<double> t;
     bool gave_up = false;
-    std::optional<double> end = std::nullopt;
+    double end = 0.0;
+    bool exact = false;
 };
 
 class SphereTracer {
@@ -61,9 +69,7 @@ public:
     explicit SphereTracer(SphereTraceSettings settings) : settings_(settings) {}
 
     /// Where the ray first meets the surface in span: nothing if it does
-    /// not; else it crosses the surface in [t, t + 2·ε_t], ε_t =
-    /// step_epsilon(h, …), or in [t, end] when end is given — a bracket
-    /// holding that one root, which the caller refines.
+    /// not; else the crossing (above), which the caller refines.
     Crossing first_hit(RayFunction& h, Span span, TraceCounters& counters) const {
         return first_crossing(h, span, 1.0, counters);
     }
