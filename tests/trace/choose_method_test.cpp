@@ -1,5 +1,5 @@
-// `auto` resolves to the interval method on small tapes and to sphere
-// tracing on large ones; explicit methods pass through.
+// `auto` resolves to the polynomial method on polynomials and to sphere
+// tracing on everything else; explicit methods pass through.
 #include <gtest/gtest.h>
 #include "support/models.hpp"
 
@@ -11,9 +11,11 @@
 namespace zeroset {
 namespace {
 
-TEST(ChooseMethod, AutoPicksIntervalForSmallTapesAndSphereForLargeOnes) {
+TEST(ChooseMethod, AutoPicksPolynomialForPolynomialsAndSphereForTheRest) {
+    const Tape quartic(square(square(var_x()) + square(var_y()) + square(var_z()) + 0.75) - 4.0 * (square(var_x()) + square(var_y())));
+    EXPECT_EQ(resolve_method(Method::Auto, quartic), Method::Polynomial);
     const Tape blob(Expr(1.0) - exp(-(square(var_x() - 1.2) + square(var_y()) + square(var_z()) - 1.0)));
-    EXPECT_EQ(resolve_method(Method::Auto, blob), Method::Interval);
+    EXPECT_EQ(resolve_method(Method::Auto, blob), Method::Sphere);
     ZEROSET_SKIP_WITHOUT_MODEL("bear.vm");
     std::ifstream in(ZEROSET_MODELS_DIR "/bear.vm");
     const Tape bear(import_vm(in));
