@@ -169,5 +169,35 @@ TEST(SphereMethod, FindsSheetsThinnerThanEpsilon) {
     EXPECT_GT(found, 300);
 }
 
+// All hits through such sheets: both faces of each, as the interval method
+// finds them, though they are closer than the 2ε the march resumes after.
+TEST(SphereMethod, AllHitsKeepBothFacesOfSheetsThinnerThanEpsilon) {
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const Bounds bounds = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+    const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
+    int pairs = 0;
+    for (int i = 0; i < 500; ++i) {
+        const Vec3d n = normalize(Vec3d{u(rng), u(rng), u(rng)});
+        const double half_width = (0.05 + 0.45 * (u(rng) + 1.0)) * settings.sphere_epsilon;
+        const Expr plane = n.x * var_x() + n.y * var_y() + n.z * var_z();
+        const Tape tape(min(abs(plane - 0.3 * u(rng)) - half_width, abs(plane + 0.5) - half_width));
+        const Vec3d from = 3.0 * normalize(Vec3d{u(rng), u(rng), u(rng)});
+        const Ray ray{from, normalize(Vec3d{0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)} - from)};
+        const auto span = bounds.clip(ray, 0.0, INFINITY);
+        if (!span) continue;
+        RayFunction h(tape);
+        h.set_ray(ray);
+        TraceCounters counters;
+        std::vector<double> interval, sphere;
+        make_root_finder(Method::Interval, tape, settings)->all_hits(h, *span, interval, counters);
+        make_root_finder(Method::Sphere, tape, settings)->all_hits(h, *span, sphere, counters);
+        ASSERT_EQ(sphere.size(), interval.size()) << "ray " << i;
+        for (std::size_t k = 0; k < sphere.size(); ++k) EXPECT_NEAR(sphere[k], interval[k], 1e-9) << "ray " << i;
+        pairs += static_cast<int>(sphere.size()) / 2;
+    }
+    EXPECT_GT(pairs, 100);
+}
+
 }  // namespace
 }  // namespace zeroset

@@ -15,6 +15,8 @@ double far_end(Span span) { return std::max(std::abs(span.t0), std::abs(span.t1)
 
 SphereMethod::SphereMethod(const RootFinderSettings& settings)
     : tracer_({settings.sphere_epsilon, 16, settings.max_segments, settings.tangent_width}),
+      close_roots_(settings),
+      merge_width_(4.0 * settings.tangent_width),
       max_hits_(settings.max_hits) {}
 
 Crossing SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCounters& counters) {
@@ -48,20 +50,33 @@ HitStatus SphereMethod::all_hits(RayFunction& h, Span span, std::vector<double>&
     double side = start > 0.0 ? 1.0 : -1.0;
     double t = span.t0;
     bool gave_up = false;
+    const double reach = 2.0 * tracer_.step_epsilon(h, far_end(span)), merge = h.to_t(merge_width_);
+    const auto add = [&](double root) {
+        hits.push_back(root);
+        if (hits.size() - before <= max_hits_) return true;
+        hits.pop_back();
+        gave_up = true;
+        return false;
+    };
     while (t < span.t1) {
         const Crossing next = crossing(h, {t, span.t1}, side, counters);
         gave_up = next.gave_up;
-        const std::optional<double> root = next.t;
-        if (!root) break;
-        hits.push_back(*root);
-        if (hits.size() - before > max_hits_) {
-            hits.pop_back();
-            gave_up = true;
-            break;
+        if (!next.t) break;
+        double root = std::max(*next.t, t);
+        if (!add(root)) break;
+        // The march resumes 2ε past a root; roots closer than that (a chord
+        // or a wall thinner than 2ε) are isolated by intervals, one by one.
+        for (;;) {
+            const Span close{root + merge, std::min(root + reach, span.t1)};
+            if (!(close.t0 < close.t1)) break;
+            const HitResult found = close_roots_.first_root_on_tape_in_use(h, close, counters);
+            if (found.status == HitStatus::Failed) gave_up = true;
+            if (!found.t || !add(*found.t)) break;
+            root = *found.t;
         }
-        // Resume just past the root, on whichever side the ray is there: a
-        // chord or a wall thinner than 2ε leaves it where it was.
-        t = std::max(*root, t) + 2.0 * tracer_.step_epsilon(h, far_end(span));
+        if (gave_up) break;
+        // Resume past the last root, on whichever side the ray is there.
+        t = root + reach;
         if (t >= span.t1) break;
         const double past = h.value(t, counters);
         if (std::isnan(past)) break;

@@ -1,9 +1,12 @@
 // Sphere tracing (survey §5.2, Fig. 12; see sphere_tracer.hpp) behind the
 // RootFinder interface, with a final refinement so its hits are as precise
 // as the other methods'. All hits alternate between entering the solid
-// (tracing f) and leaving it (tracing −f).
+// (tracing f) and leaving it (tracing −f); after each root, the 2ε the
+// march cannot resolve are searched by interval isolation, so a wall or
+// chord thinner than that keeps both its roots, as with the interval method.
 #pragma once
 
+#include "zeroset/trace/interval_method.hpp"
 #include "zeroset/trace/root_finder.hpp"
 #include "zeroset/trace/sphere_tracer.hpp"
 
@@ -22,6 +25,8 @@ private:
     Crossing crossing(RayFunction& h, Span span, double side, TraceCounters& counters);
 
     SphereTracer tracer_;
+    IntervalMethod close_roots_;  // for all hits: roots within 2ε of the last one
+    double merge_width_;          // in space: roots closer than this are one (as IsolatingMethod::all_hits)
     std::size_t max_hits_;
 };
 
