@@ -15,20 +15,26 @@
 //   - the tape is pruned to the clauses live in the segment's box
 //     (RayFunction::prune), and the halves of a split segment prune their
 //     parent's tape further, so deep in a CSG model a step walks a few clauses;
-//   - a hit is reported only where the distance bound drops below ε and f
+//   - a hit is reported where the distance bound drops below ε and f
 //     changes sign within 2ε ahead — or, sooner, where a probe at the
 //     secant's zero (from the last two steps) finds f changed sign on a
 //     stretch where f is proven strictly monotone (an enclosure of H′ with
 //     one sign): that stretch holds exactly one root, and all before it is
-//     cleared, so it is the first.
+//     cleared, so it is the first;
+//   - where the bound drops below ε but f > 0 at both ends of the 2ε ahead
+//     (a graze, or a sheet thinner than 2ε), that ε-segment is settled by
+//     Mitchell's interval isolation (interval_method.hpp) down to the
+//     tangent width, so nothing is passed, however thin — the guarantee of
+//     the interval method.
 // ε is a length in space; along the ray it is ε/|x_d|, and never less than a
 // few units in the last place of t, so that every step moves t. Every step
 // stays in a segment whose L holds, so the first hit is never stepped over;
 // every step or split makes progress of at least ε, so the march always ends:
 // within about 3 × (the span's length in space) / ε segments and steps,
 // 3·10⁶ for a ray across the object's bounds — and within `max_segments`
-// segments visited, past which it gives up (a pathological function with
-// many near-grazes would otherwise spend seconds on one ray).
+// segments visited (and as many per isolated ε-segment), past which it gives
+// up (a pathological function with many near-grazes would otherwise spend
+// seconds on one ray); the render's evaluation budget stops both loops too.
 #pragma once
 
 #include <optional>
