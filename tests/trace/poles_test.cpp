@@ -50,5 +50,24 @@ TEST(Poles, RootsBesideAPoleAreFound) {
     }
 }
 
+// Past a pole the search goes on: H = 1/(1 − x) + (x − 1) jumps from +∞ to
+// −∞ at x = 1 and comes back to 0 at x = 2, the first root on a ray from
+// x = 0.1 (sphere tracing used to stop at the pole: the ray was "inside").
+TEST(Poles, TheRootPastAPoleIsTheFirstHit) {
+    const Expr f = Expr(1.0) / (1.0 - var_x()) + (var_x() - 1.0);
+    const Tape tape(f);
+    const Bounds box = Bounds::make_box({{0.1, -1, -1}, {3, 1, 1}});
+    const Ray ray{{0.1, 0.1, 0.1}, {1, 0, 0}};
+    for (const Method m : {Method::Interval, Method::Lg, Method::Sphere}) {
+        RayFunction h(tape);
+        h.set_ray(ray);
+        TraceCounters counters;
+        const HitResult hit = make_root_finder(m, tape, settings_for_scale(box.box.diagonal()))
+                                  ->first_hit(h, *box.clip(ray, 0.0, INFINITY), counters);
+        ASSERT_TRUE(hit.t.has_value()) << method_name(m);
+        EXPECT_NEAR(ray.at(*hit.t).x, 2.0, 1e-9) << method_name(m);
+    }
+}
+
 }  // namespace
 }  // namespace zeroset

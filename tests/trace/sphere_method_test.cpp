@@ -161,6 +161,7 @@ TEST(SphereMethod, FindsSheetsThinnerThanEpsilon) {
         TraceCounters counters;
         const HitResult interval = make_root_finder(Method::Interval, tape, settings)->first_hit(h, *span, counters);
         const HitResult sphere = make_root_finder(Method::Sphere, tape, settings)->first_hit(h, *span, counters);
+        ASSERT_EQ(sphere.status, interval.status) << "ray " << i;
         ASSERT_EQ(sphere.t.has_value(), interval.t.has_value()) << "ray " << i;
         if (!sphere.t) continue;
         ++found;
@@ -190,13 +191,45 @@ TEST(SphereMethod, AllHitsKeepBothFacesOfSheetsThinnerThanEpsilon) {
         h.set_ray(ray);
         TraceCounters counters;
         std::vector<double> interval, sphere;
-        make_root_finder(Method::Interval, tape, settings)->all_hits(h, *span, interval, counters);
-        make_root_finder(Method::Sphere, tape, settings)->all_hits(h, *span, sphere, counters);
+        const HitStatus interval_status =
+            make_root_finder(Method::Interval, tape, settings)->all_hits(h, *span, interval, counters);
+        const HitStatus sphere_status =
+            make_root_finder(Method::Sphere, tape, settings)->all_hits(h, *span, sphere, counters);
+        ASSERT_EQ(sphere_status, interval_status) << "ray " << i;
         ASSERT_EQ(sphere.size(), interval.size()) << "ray " << i;
         for (std::size_t k = 0; k < sphere.size(); ++k) EXPECT_NEAR(sphere[k], interval[k], 1e-9) << "ray " << i;
         pairs += static_cast<int>(sphere.size()) / 2;
     }
     EXPECT_GT(pairs, 100);
+}
+
+}  // namespace
+}  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+// A sheet thinner than ε just past the span's end (as past the face of an
+// octree cell) is not the span's: the ε-segment the march isolates at t1
+// reaches 2ε beyond it, and a root found there must not be reported.
+TEST(SphereMethod, ARootJustPastTheSpanIsNotReported) {
+    const Bounds bounds = Bounds::make_box({{-1, -1, -1}, {3, 1, 1}});
+    const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
+    const double eps = settings.sphere_epsilon;
+    int rays = 0;
+    for (const double past : {0.2, 0.5, 0.9, 1.3, 1.7}) {
+        const double t1 = 2.0, sheet = t1 + past * eps;
+        // A wobble keeps the slope bound loose, so steps stop short of the sheet.
+        const Tape tape((abs(var_x() - sheet) - 0.1 * eps) * (1.0 + 1e-3 * sin(1e7 * var_x())));
+        const Ray ray{{0, 0.1, 0.1}, {1, 0, 0}};
+        RayFunction h(tape);
+        h.set_ray(ray);
+        TraceCounters counters;
+        const HitResult hit = make_root_finder(Method::Sphere, tape, settings)->first_hit(h, {0.0, t1}, counters);
+        EXPECT_FALSE(hit.t.has_value()) << "sheet " << past << "ε past t1: hit at " << hit.t.value_or(NAN);
+        ++rays;
+    }
+    EXPECT_EQ(rays, 5);
 }
 
 }  // namespace

@@ -23,7 +23,10 @@ double SphereTracer::step_epsilon(const RayFunction& h, double t) const {
     return std::max(h.to_t(settings_.epsilon), 4.0 * ulp);
 }
 
-Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounters& counters) const {
+Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, TraceCounters& counters) const {
+    // The march looks for where side·H falls to 0; past a pole H changes
+    // sign without a root, and the side flips with it.
+    double side = side_at_start;
     const auto value_at = [&](double t) { return side * h.value(t, counters); };
     // An enclosure of (side·H)′ over [from, to].
     const auto side_slope = [&](double from, double to) {
@@ -60,6 +63,8 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
     // Mitchell's isolation settles it down to the tangent width, on the
     // tape of the segment it lies in (whose box reaches 2ε past its end).
     const auto root_in_gap = [&](double from, double to) -> std::optional<Crossing> {
+        to = std::min(to, span.t1);  // a root past t1 is not the span's
+        if (!(from < to)) return std::nullopt;
         const std::uint64_t nans = counters.nan_evaluations;
         RootFinderSettings isolating;
         isolating.tangent_width = settings_.tangent_width;
@@ -113,7 +118,10 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side, TraceCounte
             if (fb <= 0.0) {
                 const bool unbounded = !std::isfinite(value.lo) || !std::isfinite(value.hi);
                 if (unbounded && closes_in_on_a_pole(h, a, b, counters)) {
-                    clear_to = b;  // the sign changed across a pole, not a root: never look back past it
+                    // The sign changed across a pole, not a root: never look
+                    // back past it, and look on for where H comes back to 0.
+                    clear_to = b;
+                    side = -side;
                     continue;
                 }
                 return {a, false, b};  // an ε-segment
