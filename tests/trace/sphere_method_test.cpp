@@ -137,6 +137,28 @@ TEST(SphereMethod, AllHitsGoOnPastAShortChord) {
 namespace zeroset {
 namespace {
 
+/// A random sheet 0.05ε … 0.95ε thick across the unit box, and a ray from
+/// outside towards the box's middle.
+struct SheetCase {
+    Expr plane;         // n·p for a random unit n
+    double offset;      // the sheet is at n·p = offset
+    double half_width;  // its half thickness
+    Ray ray;
+};
+
+SheetCase random_sheet(std::mt19937_64& rng, double eps) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const Vec3d n = normalize(Vec3d{u(rng), u(rng), u(rng)});
+    SheetCase c{n.x * var_x() + n.y * var_y() + n.z * var_z(), 0.0, 0.0, {}};
+    c.half_width = (0.05 + 0.45 * (u(rng) + 1.0)) * eps;
+    c.offset = 0.3 * u(rng);
+    const Vec3d from = 3.0 * normalize(Vec3d{u(rng), u(rng), u(rng)});
+    c.ray = Ray{from, normalize(Vec3d{0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)} - from)};
+    return c;
+}
+
+const Bounds unit_box = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+
 // Sheets thinner than ε: a step may land inside one (then the bracket must
 // end where f ≤ 0, not 2ε on, past the sheet), or step onto an ε-segment
 // positive at both ends with the sheet inside (then interval isolation must
@@ -144,16 +166,13 @@ namespace {
 // finds, on every ray.
 TEST(SphereMethod, FindsSheetsThinnerThanEpsilon) {
     std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    const Bounds bounds = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+    const Bounds& bounds = unit_box;
     const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
     int found = 0;
     for (int i = 0; i < 2000; ++i) {
-        const Vec3d n = normalize(Vec3d{u(rng), u(rng), u(rng)});
-        const double half_width = (0.05 + 0.45 * (u(rng) + 1.0)) * settings.sphere_epsilon;  // 0.05ε … 0.95ε
-        const Tape tape(abs(n.x * var_x() + n.y * var_y() + n.z * var_z() - 0.3 * u(rng)) - half_width);
-        const Vec3d from = 3.0 * normalize(Vec3d{u(rng), u(rng), u(rng)});
-        const Ray ray{from, normalize(Vec3d{0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)} - from)};
+        const SheetCase c = random_sheet(rng, settings.sphere_epsilon);
+        const Tape tape(abs(c.plane - c.offset) - c.half_width);
+        const Ray& ray = c.ray;
         const auto span = bounds.clip(ray, 0.0, INFINITY);
         if (!span) continue;
         RayFunction h(tape);
@@ -174,17 +193,13 @@ TEST(SphereMethod, FindsSheetsThinnerThanEpsilon) {
 // finds them, though they are closer than the 2ε the march resumes after.
 TEST(SphereMethod, AllHitsKeepBothFacesOfSheetsThinnerThanEpsilon) {
     std::mt19937_64 rng(8);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    const Bounds bounds = Bounds::make_box({{-1, -1, -1}, {1, 1, 1}});
+    const Bounds& bounds = unit_box;
     const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
     int pairs = 0;
     for (int i = 0; i < 500; ++i) {
-        const Vec3d n = normalize(Vec3d{u(rng), u(rng), u(rng)});
-        const double half_width = (0.05 + 0.45 * (u(rng) + 1.0)) * settings.sphere_epsilon;
-        const Expr plane = n.x * var_x() + n.y * var_y() + n.z * var_z();
-        const Tape tape(min(abs(plane - 0.3 * u(rng)) - half_width, abs(plane + 0.5) - half_width));
-        const Vec3d from = 3.0 * normalize(Vec3d{u(rng), u(rng), u(rng)});
-        const Ray ray{from, normalize(Vec3d{0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)} - from)};
+        const SheetCase c = random_sheet(rng, settings.sphere_epsilon);
+        const Tape tape(min(abs(c.plane - c.offset) - c.half_width, abs(c.plane + 0.5) - c.half_width));
+        const Ray& ray = c.ray;
         const auto span = bounds.clip(ray, 0.0, INFINITY);
         if (!span) continue;
         RayFunction h(tape);
