@@ -2,8 +2,6 @@
 #include "zeroset/trace/sphere_method.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "zeroset/trace/refine_bracket.hpp"
 
