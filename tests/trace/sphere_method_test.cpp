@@ -249,3 +249,52 @@ TEST(SphereMethod, ARootJustPastTheSpanIsNotReported) {
 
 }  // namespace
 }  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+// A sheet thinner than ε just in front of a steep wall, closer to it than
+// 2ε: the march's last bracket, from the last point outside to the first
+// inside the wall, holds the sheet's two roots before the wall's. Its first
+// root is the hit, not whichever one Newton's refinement lands on. The wall
+// comes plain, and written as max(w, 0) + min(w, 0) — w itself, but with
+// kinks on the surface, as a distance's max(d, 0) has them: no enclosure of
+// its slope over the bracket has one sign, so the bracket is cleared by steps.
+TEST(SphereMethod, ASheetInFrontOfAWallWithinTheLastBracketIsTheHit) {
+    const Bounds& bounds = unit_box;
+    const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
+    const double eps = settings.sphere_epsilon;
+    for (const bool kinked : {false, true}) {
+        std::mt19937_64 rng(21);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        int found = 0, wrong = 0;
+        for (int i = 0; i < 3000; ++i) {
+            const SheetCase c = random_sheet(rng, eps);
+            const double gap = c.half_width + (0.05 + 1.9 * u(rng)) * eps;
+            const double steep = std::pow(10.0, 3.0 * u(rng));
+            // Which way the ray crosses the sheet: the wall lies beyond it.
+            const Tape plane(c.plane);
+            RayFunction along(plane);
+            along.set_ray(c.ray);
+            TraceCounters counters;
+            const double side = along.value(1.0, counters) > along.value(0.0, counters) ? 1.0 : -1.0;
+            const Expr wall = steep * (gap - side * (c.plane - c.offset));
+            const Tape tape(min(abs(c.plane - c.offset) - c.half_width, kinked ? max(wall, Expr(0.0)) + min(wall, Expr(0.0)) : wall));
+            const auto span = bounds.clip(c.ray, 0.0, INFINITY);
+            if (!span) continue;
+            RayFunction h(tape);
+            h.set_ray(c.ray);
+            const HitResult interval = make_root_finder(Method::Interval, tape, settings)->first_hit(h, *span, counters);
+            const HitResult sphere = make_root_finder(Method::Sphere, tape, settings)->first_hit(h, *span, counters);
+            ASSERT_EQ(sphere.t.has_value(), interval.t.has_value()) << "ray " << i;
+            if (!sphere.t) continue;
+            ++found;
+            if (std::abs(*sphere.t - *interval.t) > 1e-9) ++wrong;
+        }
+        EXPECT_EQ(wrong, 0) << "of " << found << (kinked ? " (kinked wall)" : " (plain wall)");
+        EXPECT_GT(found, 300);
+    }
+}
+
+}  // namespace
+}  // namespace zeroset

@@ -16,6 +16,46 @@ namespace {
 // enclosure when it finds a sign change): enough for a ray closing in on a
 // surface, few enough that a ray grazing one wastes little.
 constexpr int max_probes = 3;
+
+/// The first root of H in a bracket [lo, hi] of at most 2ε where side·H > 0
+/// at lo and ≤ 0 at hi. The bracket holds an odd number of roots: a sheet
+/// thinner than 2ε in front of the crossing adds two, and guarded Newton
+/// lands on any of them. One enclosure of H′ over the bracket usually shows
+/// side·H strictly falling: one root, which Newton refines. Where it does
+/// not (the kinks of a distance's max(d, 0) lie on its surface, and their
+/// enclosures cancel only in exact arithmetic), Newton's root r is the first
+/// if steps of side·H / L from lo — L the bracket's bound on how fast side·H
+/// falls — reach within the tangent width of r, f > 0 at each: nothing
+/// before r is thicker than that, the interval method's own resolution.
+/// Where a step finds f ≤ 0, or 64 steps do not get there, `isolate` (the
+/// interval method) settles the rest; should it find nothing where the
+/// signs at the ends differ (they and the enclosures disagree by rounding),
+/// Newton's root stands. Nothing when no root lies in the bracket (it was
+/// cut at the span's end).
+template <class Isolate>
+Crossing first_root_of_bracket(RayFunction& h, Span bracket, double side, double tangent_width, Isolate&& isolate,
+                               TraceCounters& counters) {
+    constexpr int max_steps = 64;
+    const auto [lo, hi] = bracket;
+    const std::optional<double> root = lo < hi ? refine_sign_change(h, lo, hi, counters) : std::nullopt;
+    const Crossing newton = root ? Crossing{root, false, *root, true} : Crossing{};
+    const auto isolated = [&](double from, double to) { return isolate(from, to).value_or(newton); };
+    if (!root) return isolated(lo, hi);
+    const Interval d1 = h.slope(lo, hi, counters);  // 0 where H is undefined: then the isolation fails
+    const Interval slope = side > 0.0 ? d1 : -d1;
+    if (slope.hi < 0.0) return newton;
+    const double descent = -slope.lo;
+    double t = lo, f = side * h.value(lo, counters);
+    for (int steps = 0; steps < max_steps && f > 0.0 && std::isfinite(descent) && descent > 0.0; ++steps) {
+        const double next = t + f / descent;
+        if (next >= *root - tangent_width) return newton;
+        const double f_next = side * h.value(next, counters);
+        if (!(f_next > 0.0)) return isolated(t, next);  // a root before Newton's (or a NaN)
+        t = next, f = f_next;
+    }
+    return isolated(t, hi);
+}
+
 }  // namespace
 
 double SphereTracer::step_epsilon(const RayFunction& h, double t) const {
@@ -35,15 +75,40 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
     };
     // The last point marched to where f > 0: the ray is clear up to it.
     double clear_to = span.t0;
+    // An ε-segment [from, to] which steps cannot settle, or a bracket: its
+    // first root by Mitchell's isolation down to the tangent width, on the
+    // tape in use (the segment's, whose box reaches 2ε past its end, or the
+    // full one). Nothing when it holds none before t1 (a root past t1 is not
+    // the span's).
+    const auto first_root_in = [&](double from, double to) -> std::optional<Crossing> {
+        to = std::min(to, span.t1);
+        if (!(from < to)) return std::nullopt;
+        const std::uint64_t nans = counters.nan_evaluations;
+        RootFinderSettings isolating;
+        isolating.tangent_width = settings_.tangent_width;
+        isolating.max_segments = settings_.max_segments;
+        IntervalMethod isolation(isolating);
+        const HitResult root = isolation.first_root_on_tape_in_use(h, {from, to}, counters);
+        if (counters.nan_evaluations != nans) return Crossing{};
+        if (root.status == HitStatus::Failed) return Crossing{std::nullopt, true};
+        if (root.t) return Crossing{root.t, false, *root.t, true};
+        return std::nullopt;
+    };
+    // A bracket with a sign change, at most 2ε: its first root (see first_root_of_bracket).
+    const auto settle = [&](double lo, double hi) -> Crossing {
+        return first_root_of_bracket(h, {lo, std::min(hi, span.t1)}, side, h.to_t(settings_.tangent_width),
+                                     first_root_in, counters);
+    };
     // f ≤ 0 at t, reached by a step or as a segment's start: the crossing is
     // in (clear_to, t]. A step of H/L lands on the root exactly when L is
     // tight, and past it by the rounding of H, so t is usually a few ulps
     // beyond: one probe ε back confirms it; else bisection narrows the
-    // bracket to 2ε, which the caller refines.
-    const auto crossing_before = [&](double t, double eps) -> Crossing {
+    // bracket to 2ε, which is settled (above). The tape in use holds from
+    // `box_from` (the segment's start) on; before it, the full tape does.
+    const auto crossing_before = [&](double t, double eps, double box_from) -> Crossing {
         // f ≤ 0 where the march starts, or just past a pole: a root only if f is 0 there.
         if (!(t > clear_to)) return {t, false, t};
-        h.use_full_tape();  // the probes may leave the segment's box, where its pruned tape does not hold
+        if (clear_to < box_from) h.use_full_tape();
         double lo = clear_to, hi = t;
         if (const double back = t - eps; back > lo) {
             const double f = value_at(back);
@@ -56,25 +121,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
             if (std::isnan(f)) return {};
             (f > 0.0 ? lo : hi) = mid;
         }
-        return {lo, false, hi};
-    };
-    // An ε-segment [from, to] where f > 0 at both ends, which steps cannot
-    // settle: a graze or a sheet thinner than 2ε may dip below 0 inside.
-    // Mitchell's isolation settles it down to the tangent width, on the
-    // tape of the segment it lies in (whose box reaches 2ε past its end).
-    const auto root_in_gap = [&](double from, double to) -> std::optional<Crossing> {
-        to = std::min(to, span.t1);  // a root past t1 is not the span's
-        if (!(from < to)) return std::nullopt;
-        const std::uint64_t nans = counters.nan_evaluations;
-        RootFinderSettings isolating;
-        isolating.tangent_width = settings_.tangent_width;
-        isolating.max_segments = settings_.max_segments;
-        IntervalMethod isolation(isolating);
-        const HitResult root = isolation.first_root_on_tape_in_use(h, {from, to}, counters);
-        if (counters.nan_evaluations != nans) return Crossing{};
-        if (root.status == HitStatus::Failed) return Crossing{std::nullopt, true};
-        if (root.t) return Crossing{root.t, false, *root.t, true};
-        return std::nullopt;
+        return settle(lo, hi);
     };
     SegmentStack segments;
     segments.push(span.t0, span.t1, 0);
@@ -111,7 +158,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
             // pole, where f changes sign without one (−1/x at x = 0).
             const double fa = value_at(a);
             if (std::isnan(fa)) return {};
-            if (fa <= 0.0) return crossing_before(a, eps);
+            if (fa <= 0.0) return crossing_before(a, eps, a);
             clear_to = a;
             const double fb = value_at(b);
             if (std::isnan(fb)) return {};
@@ -124,9 +171,9 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
                     side = -side;
                     continue;
                 }
-                return {a, false, b};  // an ε-segment
+                return settle(a, b);  // an ε-segment
             }
-            if (const auto gap = root_in_gap(a, b)) return *gap;
+            if (const auto gap = first_root_in(a, b)) return *gap;
             continue;
         }
         double t = a;
@@ -135,7 +182,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
         for (int steps = 0;; ++steps) {
             const double f = value_at(t);
             if (std::isnan(f)) return {};
-            if (f <= 0.0) return crossing_before(t, eps);  // on or inside the surface
+            if (f <= 0.0) return crossing_before(t, eps, a);  // on or inside the surface
             clear_to = t;
             // Closing in by steps is slow where the bound is loose: the last
             // two steps' secant predicts where H reaches 0 (Newton's eq. 22
@@ -163,8 +210,8 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
                 const double ahead = t + 2.0 * eps;
                 const double f_ahead = value_at(ahead);
                 if (std::isnan(f_ahead)) return {};
-                if (f_ahead <= 0.0) return {t, false, ahead};
-                if (const auto gap = root_in_gap(t, ahead)) return *gap;
+                if (f_ahead <= 0.0) return settle(t, ahead);
+                if (const auto gap = first_root_in(t, ahead)) return *gap;
                 if (b - ahead > 2.0 * eps && segments.can_split(segment)) {
                     segments.split(segment, ahead);
                     break;

@@ -20,7 +20,9 @@
 //     secant's zero (from the last two steps) finds f changed sign on a
 //     stretch where f is proven strictly monotone (an enclosure of H′ with
 //     one sign): that stretch holds exactly one root, and all before it is
-//     cleared, so it is the first;
+//     cleared, so it is the first. The 2ε bracket may hold three (a sheet
+//     thinner than 2ε in front of the crossing): it is proven monotone too,
+//     or cleared by steps up to Newton's root, or isolated by intervals;
 //   - where the bound drops below ε but f > 0 at both ends of the 2ε ahead
 //     (a graze, or a sheet thinner than 2ε), that ε-segment is settled by
 //     Mitchell's interval isolation (interval_method.hpp) down to the
@@ -60,9 +62,9 @@ struct SphereTraceSettings {
 /// Where a march ended: at a crossing, at none, or given up (past
 /// max_segments; also nothing when it met a NaN, which h records). The
 /// crossing lies in [t, end], where side·f > 0 at t and ≤ 0 at end: a
-/// bracket at most 2ε long, or one proven to hold a single root (or, where
-/// the march starts on f ≤ 0, [t, t]: a root only if f is 0 there). When
-/// `exact`, t is the root itself, found by interval isolation, and end = t.
+/// stretch proven to hold a single root (or, where the march starts on
+/// f ≤ 0, [t, t]: a root only if f is 0 there). When `exact`, t is the
+/// first root itself, refined or isolated, and end = t.
 struct Crossing {
     std::optional<double> t;
     bool gave_up = false;
