@@ -125,6 +125,35 @@ TEST(PolynomialSolvers, DoubleRootsAreReported) {
     }
 }
 
+// Leading coefficients at rounding level — what cancellation leaves of
+// terms that are 0 in exact arithmetic, as in a swept sphere's P (its
+// degree 10 is 6 for a curve on one axis). Dividing by such a coefficient
+// turned a Sturm sequence into noise and lost the root.
+TEST(PolynomialSolvers, LeadingCoefficientsAtRoundingLevelDoNotHideARoot) {
+    // P for the cubic with control x = (0, 2, −1, 1), radius 0.1 → 0.4, and
+    // the ray o = (−2.7581…, −0.2937…, 0.1228…), d = (2.0320…, 0, 0).
+    const std::vector<double> swept{54.322731117938019,     -578.66267123156649,    2204.1311703792744,
+                                    -3428.8569898327114,    1268.5137291590218,     1783.6590630281717,
+                                    -1337.7442972715944,    -7.4505805969238281e-09, -1.862645149230957e-09,
+                                    9.3132257461547852e-10, -2.3283064365386963e-10};
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (const Solver& s : solvers()) {
+        if (!s.guaranteed) continue;
+        SCOPED_TRACE(s.name);
+        expect_roots(solve(s, swept, 0.0, 1.0), {0.78554751558}, 1e-9);
+        for (int trial = 0; trial < 200; ++trial) {
+            const std::vector<double> roots{0.1 + 0.2 * u(rng), 0.4 + 0.2 * u(rng), 0.7 + 0.2 * u(rng)};
+            std::vector<double> c = from_roots(roots);
+            double largest = 0.0;
+            for (const double k : c) largest = std::max(largest, std::abs(k));
+            for (int extra = 0; extra < 4; ++extra) c.push_back((u(rng) - 0.5) * 1e-12 * largest);
+            SCOPED_TRACE(trial);
+            expect_roots(solve(s, c, 0.0, 1.0), roots, 1e-9);
+        }
+    }
+}
+
 TEST(PolynomialSolvers, RootsAtTheEndsOfTheRange) {
     const std::vector<double> roots{0.25, 0.5, 1.0};
     for (const Solver& s : solvers()) {

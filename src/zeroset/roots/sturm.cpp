@@ -17,13 +17,15 @@ namespace {
 /// range; p is kept exact, so its zeros are).
 class SturmSequence {
 public:
-    SturmSequence(std::span<const double> c, int n) {
+    /// For c of degree n, counted on t with |t| ≤ reach.
+    SturmSequence(std::span<const double> c, int n, double reach) : reach_(reach) {
         auto& p0 = members_[0];
         std::copy_n(c.begin(), n + 1, p0.begin());
         degrees_[0] = n;
         auto& p1 = members_[1];
         for (int i = 0; i < n; ++i) p1[at(i)] = static_cast<double>(i + 1) * p0[at(i + 1)];
         degrees_[1] = n - 1;
+        drop_negligible_leading_terms(1);
         normalize(1);
         size_ = 2;
         while (degrees_[at(size_ - 1)] > 0 && append_remainder()) {
@@ -54,6 +56,25 @@ private:
         for (int i = 0; i <= degrees_[at(k)]; ++i) m = std::max(m, std::abs(members_[at(k)][at(i)]));
         return m;
     }
+    /// Drops member k's leading terms that are negligible where it is
+    /// counted (|c_i|·reachⁱ below sturm_leading_tolerance of its largest
+    /// term): rounding residue — a term that is 0 in exact arithmetic, left
+    /// by cancellation — that the next division would divide by, giving
+    /// quotients so large that the remainder is noise. (The sequence stays
+    /// a Sturm sequence of p, as the member changes by far less than its
+    /// size; p itself is kept whole.)
+    void drop_negligible_leading_terms(int k) {
+        if (!(reach_ > 0.0 && std::isfinite(reach_))) return;
+        auto& m = members_[at(k)];
+        int& degree = degrees_[at(k)];
+        double largest_term = 0.0, power = 1.0;
+        std::array<double, max_polynomial_degree + 1> terms{};
+        for (int i = 0; i <= degree; ++i, power *= reach_) {
+            terms[at(i)] = std::abs(m[at(i)]) * power;
+            largest_term = std::max(largest_term, terms[at(i)]);
+        }
+        while (degree > 0 && terms[at(degree)] <= sturm_leading_tolerance * largest_term) m[at(degree--)] = 0.0;
+    }
     void normalize(int k) {
         const double m = largest(k);
         for (int i = 0; i <= degrees_[at(k)]; ++i) members_[at(k)][at(i)] /= m;
@@ -78,6 +99,7 @@ private:
         auto& next = members_[at(size_)];
         for (int i = 0; i <= dr; ++i) next[at(i)] = -r[at(i)];
         degrees_[at(size_)] = dr;
+        drop_negligible_leading_terms(size_);
         normalize(size_);
         ++size_;
         return true;
@@ -86,6 +108,7 @@ private:
     std::array<PolynomialScratch, max_polynomial_degree + 1> members_{};
     std::array<int, max_polynomial_degree + 1> degrees_{};
     int size_ = 0;
+    double reach_;
 };
 
 /// An interval (a, b] and the sign changes at its ends.
@@ -139,7 +162,7 @@ PolynomialRoots sturm_roots(std::span<const double> c, double t0, double t1, std
     PolynomialRoots result;
     if (n < 1 || out.empty()) return result;
     const std::span<const double> p = c.first(static_cast<std::size_t>(n + 1));
-    const SturmSequence s(p, n);
+    const SturmSequence s(p, n, std::max(std::abs(t0), std::abs(t1)));
     // An end where p is within its rounding error of 0 is a root: the
     // polynomial's own root may lie a rounding error outside the range.
     // Counting starts past the neighbourhood where that holds; otherwise at

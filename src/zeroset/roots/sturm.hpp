@@ -10,7 +10,11 @@
 // coefficients are all below sturm_zero_tolerance times the size of the
 // division is taken as 0, so the sequence ends at the (numerical) gcd and
 // multiple roots count once. Roots closer together than that resolution
-// (about 1e-7 relative) may count as one.
+// (about 1e-7 relative) may count as one. A member's leading terms that are
+// negligible over the range (cancellation's residue of terms that are 0 in
+// exact arithmetic, as in a swept sphere's P) are dropped before it divides:
+// dividing by one gave quotients so large that the remainders were noise,
+// and a simple root was lost.
 #pragma once
 
 #include <span>
@@ -21,6 +25,10 @@ namespace zeroset {
 
 /// A remainder coefficient below this times the dividend's scale is 0.
 inline constexpr double sturm_zero_tolerance = 1e-13;
+/// A member's leading term below this times its largest term over the range
+/// counted is dropped before the next division (rounding residue; dividing by
+/// it would leave only noise).
+inline constexpr double sturm_leading_tolerance = 1e-10;
 
 /// The distinct real roots of c (ascending powers, degree ≤ 32) in [t0, t1],
 /// increasing, into out (at most out.size() of them: the first ones). A

@@ -18,8 +18,8 @@
 //   P(s) = A·C′² − 4·B·B′·C′ + 4·B′²·C = A·φ_in·φ_out,  φ = 2 B′ t + C′,
 // of degree 4n − 2 for a curve of degree n (10 for cubics), and isolate its
 // roots on [0, 1] by Descartes' rule of signs in the Bernstein basis (van
-// Wijk used Sturm sequences; zeroset's Sturm solver was measured to lose a
-// simple root of P here, so it is not offered). A stationary t_in makes φ_in
+// Wijk used Sturm sequences; zeroset's lost a simple root of P here until
+// its sequences dropped negligible leading terms, roots/sturm.hpp). A stationary t_in makes φ_in
 // change sign, so P does too: each extreme is a root the solver isolates —
 // except where B′ = C′ = 0, where φ_in and φ_out vanish together and P
 // need not change sign, so B′'s roots (C′'s where B′ ≡ 0) are candidates
