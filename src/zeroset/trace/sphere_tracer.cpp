@@ -20,7 +20,8 @@ constexpr int max_probes = 3;
 /// The first root of H in a bracket [lo, hi] of at most 2ε where side·H > 0
 /// at lo and ≤ 0 at hi. The bracket holds an odd number of roots: a sheet
 /// thinner than 2ε in front of the crossing adds two, and guarded Newton
-/// lands on any of them. One enclosure of H′ over the bracket usually shows
+/// lands on any of them. An enclosure of (side·H)′ over the bracket — the
+/// marched segment's (`known_slope`), or one of its own — usually shows
 /// side·H strictly falling: one root, which Newton refines. Where it does
 /// not (the kinks of a distance's max(d, 0) lie on its surface, and their
 /// enclosures cancel only in exact arithmetic), Newton's root r is the first
@@ -33,14 +34,15 @@ constexpr int max_probes = 3;
 /// Newton's root stands. Nothing when no root lies in the bracket (it was
 /// cut at the span's end).
 template <class Isolate>
-Crossing first_root_of_bracket(RayFunction& h, Span bracket, double side, double tangent_width, Isolate&& isolate,
-                               TraceCounters& counters) {
+Crossing first_root_of_bracket(RayFunction& h, Span bracket, double side, const Interval& known_slope,
+                               double tangent_width, Isolate&& isolate, TraceCounters& counters) {
     constexpr int max_steps = 64;
     const auto [lo, hi] = bracket;
     const std::optional<double> root = lo < hi ? refine_sign_change(h, lo, hi, counters) : std::nullopt;
     const Crossing newton = root ? Crossing{root, false, *root, true} : Crossing{};
     const auto isolated = [&](double from, double to) { return isolate(from, to).value_or(newton); };
     if (!root) return isolated(lo, hi);
+    if (known_slope.hi < 0.0) return newton;
     const Interval d1 = h.slope(lo, hi, counters);  // 0 where H is undefined: then the isolation fails
     const Interval slope = side > 0.0 ? d1 : -d1;
     if (slope.hi < 0.0) return newton;
@@ -95,8 +97,13 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
         return std::nullopt;
     };
     // A bracket with a sign change, at most 2ε: its first root (see first_root_of_bracket).
+    // The segment being marched and the enclosure of H′ over it.
+    double segment_a = span.t0, segment_b = span.t0;
+    Interval segment_slope = Interval::entire();
     const auto settle = [&](double lo, double hi) -> Crossing {
-        return first_root_of_bracket(h, {lo, std::min(hi, span.t1)}, side, h.to_t(settings_.tangent_width),
+        const bool in_segment = lo >= segment_a && hi <= segment_b;
+        const Interval known = !in_segment ? Interval::entire() : side > 0.0 ? segment_slope : -segment_slope;
+        return first_root_of_bracket(h, {lo, std::min(hi, span.t1)}, side, known, h.to_t(settings_.tangent_width),
                                      first_root_in, counters);
     };
     // f ≤ 0 at t, reached by a step or as a segment's start: the crossing is
@@ -146,7 +153,9 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
         // surface, so this one-sided bound serves as Lip H does in Fig. 12,
         // and is never larger; 0 when side·H cannot fall — a shadow ray
         // leaving a lit surface, say — and then one step clears the segment.
-        const double descent = std::max(0.0, -side_slope(a, b).lo);
+        segment_a = a, segment_b = b;
+        segment_slope = h.slope(a, b, counters);
+        const double descent = std::max(0.0, -(side > 0.0 ? segment_slope : -segment_slope).lo);
         const bool splittable = b - a > 2.0 * eps && segments.can_split(segment);
         if (!std::isfinite(descent)) {
             if (splittable) {
