@@ -9,6 +9,7 @@
 // the tile's rays in its own coordinates.
 #pragma once
 
+#include "zeroset/math/box3.hpp"
 #include "zeroset/math/mat4.hpp"
 #include "zeroset/math/vec3.hpp"
 
@@ -41,6 +42,10 @@ struct CameraFrustum {
     [[nodiscard]] double depth_of(const Vec3d& p) const { return dot(depth_form(), p - origin); }
     /// How fast depth grows along direction d: a ray's depth is t times this.
     [[nodiscard]] double depth_rate(const Vec3d& d) const { return dot(depth_form(), d); }
+    /// True when no ray of the tile meets the box (at any t ≥ 0): it lies
+    /// behind the eye, or in front of it and projected wholly beside the
+    /// tile's rectangle of the image plane. False when that is not certain.
+    [[nodiscard]] bool misses(const Box3& box) const;
 
 private:
     [[nodiscard]] Vec3d depth_form() const {

@@ -92,6 +92,7 @@ FrameRender::FrameRender(const Scene& scene, const RenderSettings& settings)
     cull_camera_tiles_ = settings.frustum_culling &&
                          std::any_of(prepared_.leaves().begin(), prepared_.leaves().end(),
                                      [](const ImplicitLeaf* leaf) { return leaf->octree() != nullptr; });
+    if (const Box3 box = prepared_.root().bounds(); settings.frustum_culling && is_bounded(box)) scene_box_ = box;
     prepare_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
 }
 
@@ -169,6 +170,8 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
     TileWork work;
     const CameraFrustum frustum = camera_.frustum(tile.x0, tile.y0, tile.x1, tile.y1);
     const CameraFrustum* culled = cull_camera_tiles_ ? &frustum : nullptr;
+    // Cone tracing looks beside a ray that misses, so it keeps every ray.
+    const bool background_only = !cone && scene_box_ && frustum.misses(*scene_box_);
     for (int py = tile.y0; py < tile.y1; ++py) {
         for (int px = tile.x0; px < tile.x1; ++px) {
             if (stopped()) break;
@@ -179,7 +182,7 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
                 const Ray ray = camera_.ray(px, py, sub.x, sub.y);
                 ++work.camera_rays;
                 const int pixel = (py - tile.y0) * frustum.columns + (px - tile.x0);
-                const auto hit = tracer.closest_hit(ray, far, culled, pixel);
+                const auto hit = background_only ? std::nullopt : tracer.closest_hit(ray, far, culled, pixel);
                 Vec3d seen = scene_.background;
                 if (hit) {
                     ++work.hits;

@@ -98,6 +98,9 @@ private:
     // Whether camera tiles are culled: asked for, and some leaf is
     // partitioned (only those cull; for the others a tile would only cost).
     bool cull_camera_tiles_ = false;
+    // The scene's bounds, where finite: a tile whose rays all pass them is
+    // background without a ray traced.
+    std::optional<Box3> scene_box_;
     std::optional<SceneDistance> distance_;
     std::vector<TileRect> tiles_;
     double prepare_seconds_ = 0.0;

@@ -1,0 +1,84 @@
+// CameraFrustum::misses: a box it calls missed meets no ray of the tile
+// (rays through random points of every pixel, and its corners), and the
+// test decides: boxes beside the tile, behind the eye or around it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "zeroset/accel/camera_frustum.hpp"
+
+namespace zeroset {
+namespace {
+
+/// A tile of 8 × 6 pixels near the middle of a camera looking along a tilted axis.
+CameraFrustum tilted_tile() {
+    CameraFrustum f;
+    f.origin = {0.3, 1.2, -4.0};
+    f.forward = normalize(Vec3d{0.1, -0.25, 1.0});
+    f.right = normalize(cross(Vec3d{0, 1, 0}, f.forward)) * 0.4;
+    f.up = cross(f.forward, f.right);
+    f.columns = 8;
+    f.rows = 6;
+    f.du = 0.02;
+    f.dv = -0.02;
+    f.u0 = -0.05;
+    f.v0 = 0.04;
+    return f;
+}
+
+/// Whether some ray of the tile, through a random point of a random pixel
+/// or through one of the tile's corners, meets the box.
+bool some_ray_meets(const CameraFrustum& f, const Box3& box, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto meets = [&](double u, double v) {
+        return box.clip(Ray{f.origin, f.forward + f.right * u + f.up * v}, 0.0, INFINITY).has_value();
+    };
+    for (const double cu : {0.0, 1.0})
+        for (const double cv : {0.0, 1.0})
+            if (meets(f.u0 + cu * f.columns * f.du, f.v0 + cv * f.rows * f.dv)) return true;
+    for (int i = 0; i < 400; ++i)
+        if (meets(f.u0 + unit(rng) * f.columns * f.du, f.v0 + unit(rng) * f.rows * f.dv)) return true;
+    return false;
+}
+
+TEST(CameraFrustum, ABoxItMissesMeetsNoRayOfTheTile) {
+    const CameraFrustum f = tilted_tile();
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> centre(-3.0, 3.0), size(0.01, 0.6);
+    int missed = 0, kept_hit = 0;
+    for (int i = 0; i < 3000; ++i) {
+        // Boxes scattered around the eye and along the view, some behind it.
+        const Vec3d c = f.origin + f.forward * (2.0 * centre(rng)) + Vec3d{centre(rng), centre(rng), centre(rng)} * 0.3;
+        const Vec3d half{size(rng), size(rng), size(rng)};
+        const Box3 box{c - half, c + half};
+        const bool hit = some_ray_meets(f, box, rng);
+        if (f.misses(box)) {
+            ++missed;
+            EXPECT_FALSE(hit) << "box " << i;
+        } else if (hit) {
+            ++kept_hit;
+        }
+    }
+    // The test culls most of what it can: many boxes missed, many kept.
+    EXPECT_GT(missed, 1000);
+    EXPECT_GT(kept_hit, 50);
+}
+
+TEST(CameraFrustum, BoxesBehindBesideAndAroundTheEye) {
+    const CameraFrustum f = tilted_tile();
+    const Vec3d ahead = f.origin + f.forward * 3.0;
+    const Vec3d unit{0.1, 0.1, 0.1};
+    EXPECT_FALSE(f.misses({ahead - unit, ahead + unit}));                          // on the tile's central ray
+    const Vec3d behind = f.origin - f.forward * 3.0;
+    EXPECT_TRUE(f.misses({behind - unit, behind + unit}));                         // behind the eye
+    const Vec3d beside = ahead + f.right * 5.0;
+    EXPECT_TRUE(f.misses({beside - unit, beside + unit}));                         // far to the right
+    EXPECT_FALSE(f.misses({f.origin - unit, f.origin + unit}));                    // around the eye
+    constexpr double inf = INFINITY;
+    EXPECT_FALSE(f.misses({{-inf, -inf, -inf}, {inf, inf, inf}}));                 // everything
+    EXPECT_FALSE(f.misses({{NAN, 0, 0}, {1, 1, 1}}));                              // not a box: never culled
+}
+
+}  // namespace
+}  // namespace zeroset
