@@ -154,6 +154,30 @@ TEST(PolynomialSolvers, LeadingCoefficientsAtRoundingLevelDoNotHideARoot) {
     }
 }
 
+// What counts as negligible depends on the range, within bounds: a short
+// range near 0 is weighed as [−1, 1] (its own reach would drop the t² that
+// decides the root), and a range so wide that reachⁱ overflows drops nothing.
+TEST(PolynomialSolvers, NegligibleTermsAreWeighedSafelyOverTheRange) {
+    for (const Solver& s : solvers()) {
+        if (!s.guaranteed) continue;
+        SCOPED_TRACE(s.name);
+        // t³ + 10⁶t² − 10⁻⁷ on [0, 10⁻⁵]: one root, √(10⁻¹³) to 10⁻¹³ relative.
+        const std::vector<double> near_zero = solve(s, {-1e-7, 0.0, 1e6, 1.0}, 0.0, 1e-5);
+        ASSERT_EQ(near_zero.size(), 1u);
+        EXPECT_NEAR(near_zero[0], std::sqrt(1e-13), 1e-18);
+    }
+    // Degree 20, roots ±1 … ±10, scaled by 10⁻¹⁵⁰, on [0, 10¹⁷]: 10¹⁷ to the
+    // 20th overflows.
+    std::vector<double> roots;
+    for (int k = 1; k <= 10; ++k) roots.insert(roots.end(), {double(k), double(-k)});
+    std::vector<double> wide = from_roots(roots);
+    for (double& c : wide) c *= 1e-150;
+    std::array<double, max_polynomial_degree> out{};
+    const PolynomialRoots r = sturm_roots(wide, 0.0, 1e17, out);
+    ASSERT_EQ(r.count, 10);
+    for (int k = 0; k < 10; ++k) EXPECT_NEAR(out[static_cast<std::size_t>(k)], k + 1.0, 1e-9);
+}
+
 TEST(PolynomialSolvers, RootsAtTheEndsOfTheRange) {
     const std::vector<double> roots{0.25, 0.5, 1.0};
     for (const Solver& s : solvers()) {

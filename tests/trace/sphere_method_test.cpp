@@ -259,7 +259,8 @@ namespace {
 // root is the hit, not whichever one Newton's refinement lands on. The wall
 // comes plain, and written as max(w, 0) + min(w, 0) — w itself, but with
 // kinks on the surface, as a distance's max(d, 0) has them: no enclosure of
-// its slope over the bracket has one sign, so the bracket is cleared by steps.
+// its slope over the bracket has one sign, so steps clear the bracket, or
+// the interval isolation settles it.
 TEST(SphereMethod, ASheetInFrontOfAWallWithinTheLastBracketIsTheHit) {
     const Bounds& bounds = unit_box;
     const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
@@ -293,6 +294,58 @@ TEST(SphereMethod, ASheetInFrontOfAWallWithinTheLastBracketIsTheHit) {
         }
         EXPECT_EQ(wrong, 0) << "of " << found << (kinked ? " (kinked wall)" : " (plain wall)");
         EXPECT_GT(found, 300);
+    }
+}
+
+}  // namespace
+}  // namespace zeroset
+
+namespace zeroset {
+namespace {
+
+// The same inside the solid, where all hits march −f: a cavity thinner than
+// ε just before the back wall the ray leaves by. The first exit is the
+// cavity's near face.
+TEST(SphereMethod, ACavityBeforeTheBackWallIsTheFirstExit) {
+    const Bounds& bounds = unit_box;
+    const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
+    const double eps = settings.sphere_epsilon;
+    for (const bool kinked : {false, true}) {
+        std::mt19937_64 rng(21);
+        std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+        int exits = 0, wrong = 0;
+        for (int i = 0; i < 3000; ++i) {
+            const Vec3d n = normalize(Vec3d{u(rng), u(rng), u(rng)});
+            const Expr plane = n.x * var_x() + n.y * var_y() + n.z * var_z();
+            const double half_width = (0.05 + 0.45 * (u(rng) + 1.0)) * eps, offset = 0.3 * u(rng);
+            const Vec3d from = 0.05 * Vec3d{u(rng), u(rng), u(rng)};
+            const Ray ray{from, normalize(Vec3d{u(rng), u(rng), u(rng)} - from)};
+            const double towards = dot(n, ray.dir) > 0.0 ? 1.0 : -1.0;  // the ray crosses the planes this way
+            const double gap = half_width + (0.05 + 1.9 * unit(rng)) * eps;
+            const double steep = std::pow(10.0, 3.0 * unit(rng));
+            const Expr across = towards * (plane - offset);
+            const Expr wall = steep * (gap - across);  // > 0 before the back wall
+            const Expr back = kinked ? max(wall, Expr(0.0)) + min(wall, Expr(0.0)) : wall;
+            // Inside: before the back wall and outside the cavity |across| < half_width.
+            const Tape tape(max(-back, min(steep * (across + half_width), half_width - across)));
+            const auto span = bounds.clip(ray, 0.0, INFINITY);
+            if (!span) continue;
+            RayFunction h(tape);
+            h.set_ray(ray);
+            TraceCounters counters;
+            if (!(h.value(span->t0, counters) < 0.0)) continue;  // starts inside
+            std::vector<double> interval, sphere;
+            const HitStatus interval_status =
+                make_root_finder(Method::Interval, tape, settings)->all_hits(h, *span, interval, counters);
+            const HitStatus sphere_status =
+                make_root_finder(Method::Sphere, tape, settings)->all_hits(h, *span, sphere, counters);
+            ASSERT_EQ(sphere_status, interval_status) << "ray " << i;
+            if (interval.empty()) continue;
+            ++exits;
+            if (sphere.empty() || std::abs(sphere[0] - interval[0]) > 1e-9) ++wrong;
+        }
+        EXPECT_EQ(wrong, 0) << "of " << exits << (kinked ? " (kinked wall)" : " (plain wall)");
+        EXPECT_GT(exits, 300);
     }
 }
 

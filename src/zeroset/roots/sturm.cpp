@@ -18,7 +18,7 @@ namespace {
 class SturmSequence {
 public:
     /// For c of degree n, counted on t with |t| ≤ reach.
-    SturmSequence(std::span<const double> c, int n, double reach) : reach_(reach) {
+    SturmSequence(std::span<const double> c, int n, double reach) : reach_(std::max(reach, 1.0)) {
         auto& p0 = members_[0];
         std::copy_n(c.begin(), n + 1, p0.begin());
         degrees_[0] = n;
@@ -60,11 +60,15 @@ private:
     /// counted (|c_i|·reachⁱ below sturm_leading_tolerance of its largest
     /// term): rounding residue — a term that is 0 in exact arithmetic, left
     /// by cancellation — that the next division would divide by, giving
-    /// quotients so large that the remainder is noise. (The sequence stays
-    /// a Sturm sequence of p, as the member changes by far less than its
-    /// size; p itself is kept whole.)
+    /// quotients so large that the remainder is noise. The sequence stays a
+    /// Sturm sequence of p where each member keeps its sign at the zeros of
+    /// the one before (of p, for p′): a change far below its largest term
+    /// over the range moves those signs only where the member is itself at
+    /// rounding level. p itself is kept whole. Ranges within [−1, 1] are
+    /// weighted as [−1, 1], like the remainders' zero test (an unweighted
+    /// one): weighting them by their own small reach dropped terms that
+    /// decide a root near 0.
     void drop_negligible_leading_terms(int k) {
-        if (!(reach_ > 0.0 && std::isfinite(reach_))) return;
         auto& m = members_[at(k)];
         int& degree = degrees_[at(k)];
         double largest_term = 0.0, power = 1.0;
@@ -73,6 +77,8 @@ private:
             terms[at(i)] = std::abs(m[at(i)]) * power;
             largest_term = std::max(largest_term, terms[at(i)]);
         }
+        // reachⁱ overflowed, or every term underflowed: nothing to compare.
+        if (!std::isfinite(largest_term) || !(largest_term > 0.0)) return;
         while (degree > 0 && terms[at(degree)] <= sturm_leading_tolerance * largest_term) m[at(degree--)] = 0.0;
     }
     void normalize(int k) {

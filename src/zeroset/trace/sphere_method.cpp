@@ -1,4 +1,5 @@
-// Sphere tracing plus refinement of the bracket [t, t + 2ε] it ends on.
+// Sphere tracing plus refinement of the stretch it ends on, when the march
+// did not refine it itself.
 #include "zeroset/trace/sphere_method.hpp"
 
 #include <cmath>
@@ -23,10 +24,9 @@ Crossing SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCou
     const std::optional<double> t = marched.t;
     if (!t || counters.nan_evaluations != nans) return {std::nullopt, marched.gave_up};
     if (marched.exact) return marched;
-    // The surface is crossed in [t, end]: refine to full precision. With no
-    // sign change before t1, the crossing lies just past the span.
-    const double end = std::min(marched.end, span.t1);
-    const std::optional<double> root = refine_sign_change(h, *t, end, counters);
+    // The surface is crossed in [t, end], a stretch of the span proven to
+    // hold one root (the march's secant probe): refine it to full precision.
+    const std::optional<double> root = refine_sign_change(h, *t, marched.end, counters);
     return {root, false, root.value_or(0.0), true};
 }
 

@@ -29,10 +29,11 @@ constexpr int max_probes = 3;
 /// falls — reach within the tangent width of r, f > 0 at each: nothing
 /// before r is thicker than that, the interval method's own resolution.
 /// Where a step finds f ≤ 0, or 64 steps do not get there, `isolate` (the
-/// interval method) settles the rest; should it find nothing where the
-/// signs at the ends differ (they and the enclosures disagree by rounding),
-/// Newton's root stands. Nothing when no root lies in the bracket (it was
-/// cut at the span's end).
+/// interval method, front first) settles the bracket from the last step on;
+/// should it find nothing where the signs at the ends differ (they and the
+/// enclosures disagree by rounding), Newton's root stands. Nothing when no
+/// root lies in the bracket (it was cut at the span's end). The steps' L is
+/// always from an enclosure over the bracket itself.
 template <class Isolate>
 Crossing first_root_of_bracket(RayFunction& h, Span bracket, double side, const Interval& known_slope,
                                double tangent_width, Isolate&& isolate, TraceCounters& counters) {
@@ -52,7 +53,7 @@ Crossing first_root_of_bracket(RayFunction& h, Span bracket, double side, const 
         const double next = t + f / descent;
         if (next >= *root - tangent_width) return newton;
         const double f_next = side * h.value(next, counters);
-        if (!(f_next > 0.0)) return isolated(t, next);  // a root before Newton's (or a NaN)
+        if (!(f_next > 0.0)) return isolated(t, hi);  // a root before Newton's (or a NaN): front first
         t = next, f = f_next;
     }
     return isolated(t, hi);
