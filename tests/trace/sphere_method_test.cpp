@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "zeroset/expr/functions.hpp"
 #include "zeroset/expr/shapes.hpp"
@@ -253,97 +256,90 @@ TEST(SphereMethod, ARootJustPastTheSpanIsNotReported) {
 namespace zeroset {
 namespace {
 
-// A sheet thinner than ε just in front of a steep wall, closer to it than
-// 2ε: the march's last bracket, from the last point outside to the first
-// inside the wall, holds the sheet's two roots before the wall's. Its first
-// root is the hit, not whichever one Newton's refinement lands on. The wall
-// comes plain, and written as max(w, 0) + min(w, 0) — w itself, but with
-// kinks on the surface, as a distance's max(d, 0) has them: no enclosure of
-// its slope over the bracket has one sign, so steps clear the bracket, or
-// the interval isolation settles it.
-TEST(SphereMethod, ASheetInFrontOfAWallWithinTheLastBracketIsTheHit) {
-    const Bounds& bounds = unit_box;
-    const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
-    const double eps = settings.sphere_epsilon;
-    for (const bool kinked : {false, true}) {
-        std::mt19937_64 rng(21);
-        std::uniform_real_distribution<double> u(0.0, 1.0);
-        int found = 0, wrong = 0;
-        for (int i = 0; i < 3000; ++i) {
-            const SheetCase c = random_sheet(rng, eps);
-            const double gap = c.half_width + (0.05 + 1.9 * u(rng)) * eps;
-            const double steep = std::pow(10.0, 3.0 * u(rng));
-            // Which way the ray crosses the sheet: the wall lies beyond it.
-            const Tape plane(c.plane);
-            RayFunction along(plane);
-            along.set_ray(c.ray);
-            TraceCounters counters;
-            const double side = along.value(1.0, counters) > along.value(0.0, counters) ? 1.0 : -1.0;
-            const Expr wall = steep * (gap - side * (c.plane - c.offset));
-            const Tape tape(min(abs(c.plane - c.offset) - c.half_width, kinked ? max(wall, Expr(0.0)) + min(wall, Expr(0.0)) : wall));
-            const auto span = bounds.clip(c.ray, 0.0, INFINITY);
-            if (!span) continue;
-            RayFunction h(tape);
-            h.set_ray(c.ray);
-            const HitResult interval = make_root_finder(Method::Interval, tape, settings)->first_hit(h, *span, counters);
-            const HitResult sphere = make_root_finder(Method::Sphere, tape, settings)->first_hit(h, *span, counters);
-            ASSERT_EQ(sphere.t.has_value(), interval.t.has_value()) << "ray " << i;
-            if (!sphere.t) continue;
-            ++found;
-            if (std::abs(*sphere.t - *interval.t) > 1e-9) ++wrong;
-        }
-        EXPECT_EQ(wrong, 0) << "of " << found << (kinked ? " (kinked wall)" : " (plain wall)");
-        EXPECT_GT(found, 300);
-    }
+/// A random sheet (as above) and a wall beyond it, closer than 2ε and 1 to
+/// 1 000 steep: w > 0 before it. The wall comes plain, or written as
+/// max(w, 0) + min(w, 0) — w itself, but with kinks on its surface, as a
+/// distance's max(d, 0) has them, so no enclosure of its slope over a
+/// bracket there has one sign.
+struct WallCase {
+    SheetCase sheet;
+    Expr across;  // the distance past the sheet's middle, along the ray
+    Expr wall;
+};
+
+WallCase random_wall(std::mt19937_64& rng, double eps, bool kinked) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    WallCase c{random_sheet(rng, eps), {}, {}};
+    const double gap = c.sheet.half_width + (0.05 + 1.9 * u(rng)) * eps;
+    const double steep = std::pow(10.0, 3.0 * u(rng));
+    const Tape plane(c.sheet.plane);
+    RayFunction along(plane);
+    along.set_ray(c.sheet.ray);
+    TraceCounters counters;
+    const double side = along.value(1.0, counters) > along.value(0.0, counters) ? 1.0 : -1.0;
+    c.across = side * (c.sheet.plane - c.sheet.offset);
+    const Expr w = steep * (gap - c.across);
+    c.wall = kinked ? max(w, Expr(0.0)) + min(w, Expr(0.0)) : w;
+    return c;
 }
 
-}  // namespace
-}  // namespace zeroset
+/// Over 3 000 such cases, the rays (clipped to the unit box) on which the
+/// sphere method's first root differs from the interval method's, and
+/// those with a root: `surface(case)` gives f, `first_root(method, tape,
+/// settings, h, span)` a method's first root.
+template <class Surface, class FirstRoot>
+std::pair<int, int> wrong_first_roots(bool kinked, Surface&& surface, FirstRoot&& first_root) {
+    const RootFinderSettings settings = settings_for_scale(unit_box.box.diagonal());
+    std::mt19937_64 rng(21);
+    int wrong = 0, rooted = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const WallCase c = random_wall(rng, settings.sphere_epsilon, kinked);
+        const Tape tape(surface(c));
+        const auto span = unit_box.clip(c.sheet.ray, 0.0, INFINITY);
+        if (!span) continue;
+        RayFunction h(tape);
+        h.set_ray(c.sheet.ray);
+        const std::optional<double> interval = first_root(Method::Interval, tape, settings, h, *span);
+        const std::optional<double> sphere = first_root(Method::Sphere, tape, settings, h, *span);
+        if (!interval && !sphere) continue;
+        ++rooted;
+        if (!interval || !sphere || std::abs(*sphere - *interval) > 1e-9) ++wrong;
+    }
+    return {wrong, rooted};
+}
 
-namespace zeroset {
-namespace {
+// The sheet in front of the wall, closer to it than 2ε: the march's last
+// bracket, from the last point outside to the first inside the wall, holds
+// the sheet's two roots before the wall's. Its first root is the hit, not
+// whichever one Newton's refinement lands on; with the kinked wall, steps
+// clear the bracket or the interval isolation settles it.
+TEST(SphereMethod, ASheetInFrontOfAWallWithinTheLastBracketIsTheHit) {
+    for (const bool kinked : {false, true}) {
+        const auto [wrong, hits] = wrong_first_roots(
+            kinked, [](const WallCase& c) { return min(abs(c.across) - c.sheet.half_width, c.wall); },
+            [](Method m, const Tape& tape, const RootFinderSettings& settings, RayFunction& h, Span span) {
+                TraceCounters counters;
+                return make_root_finder(m, tape, settings)->first_hit(h, span, counters).t;
+            });
+        EXPECT_EQ(wrong, 0) << "of " << hits << (kinked ? " (kinked wall)" : " (plain wall)");
+        EXPECT_GT(hits, 300);
+    }
+}
 
 // The same inside the solid, where all hits march −f: a cavity thinner than
 // ε just before the back wall the ray leaves by. The first exit is the
 // cavity's near face.
 TEST(SphereMethod, ACavityBeforeTheBackWallIsTheFirstExit) {
-    const Bounds& bounds = unit_box;
-    const RootFinderSettings settings = settings_for_scale(bounds.box.diagonal());
-    const double eps = settings.sphere_epsilon;
     for (const bool kinked : {false, true}) {
-        std::mt19937_64 rng(21);
-        std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
-        int exits = 0, wrong = 0;
-        for (int i = 0; i < 3000; ++i) {
-            const Vec3d n = normalize(Vec3d{u(rng), u(rng), u(rng)});
-            const Expr plane = n.x * var_x() + n.y * var_y() + n.z * var_z();
-            const double half_width = (0.05 + 0.45 * (u(rng) + 1.0)) * eps, offset = 0.3 * u(rng);
-            const Vec3d from = 0.05 * Vec3d{u(rng), u(rng), u(rng)};
-            const Ray ray{from, normalize(Vec3d{u(rng), u(rng), u(rng)} - from)};
-            const double towards = dot(n, ray.dir) > 0.0 ? 1.0 : -1.0;  // the ray crosses the planes this way
-            const double gap = half_width + (0.05 + 1.9 * unit(rng)) * eps;
-            const double steep = std::pow(10.0, 3.0 * unit(rng));
-            const Expr across = towards * (plane - offset);
-            const Expr wall = steep * (gap - across);  // > 0 before the back wall
-            const Expr back = kinked ? max(wall, Expr(0.0)) + min(wall, Expr(0.0)) : wall;
-            // Inside: before the back wall and outside the cavity |across| < half_width.
-            const Tape tape(max(-back, min(steep * (across + half_width), half_width - across)));
-            const auto span = bounds.clip(ray, 0.0, INFINITY);
-            if (!span) continue;
-            RayFunction h(tape);
-            h.set_ray(ray);
-            TraceCounters counters;
-            if (!(h.value(span->t0, counters) < 0.0)) continue;  // starts inside
-            std::vector<double> interval, sphere;
-            const HitStatus interval_status =
-                make_root_finder(Method::Interval, tape, settings)->all_hits(h, *span, interval, counters);
-            const HitStatus sphere_status =
-                make_root_finder(Method::Sphere, tape, settings)->all_hits(h, *span, sphere, counters);
-            ASSERT_EQ(sphere_status, interval_status) << "ray " << i;
-            if (interval.empty()) continue;
-            ++exits;
-            if (sphere.empty() || std::abs(sphere[0] - interval[0]) > 1e-9) ++wrong;
-        }
+        const auto [wrong, exits] = wrong_first_roots(
+            kinked, [](const WallCase& c) { return max(-c.wall, c.sheet.half_width - abs(c.across)); },
+            [](Method m, const Tape& tape, const RootFinderSettings& settings, RayFunction& h, Span span) {
+                TraceCounters counters;
+                std::vector<double> roots;
+                if (h.value(span.t0, counters) >= 0.0) return std::optional<double>{};  // not from inside
+                make_root_finder(m, tape, settings)->all_hits(h, span, roots, counters);
+                return roots.empty() ? std::optional<double>{} : std::optional<double>{roots.front()};
+            });
         EXPECT_EQ(wrong, 0) << "of " << exits << (kinked ? " (kinked wall)" : " (plain wall)");
         EXPECT_GT(exits, 300);
     }
