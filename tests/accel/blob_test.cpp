@@ -212,6 +212,41 @@ INSTANTIATE_TEST_SUITE_P(EveryKernel, BlobAgainstExpression,
                          ::testing::Values(BlobKernel::Blinn, BlobKernel::Metaball, BlobKernel::Soft, BlobKernel::PovRay),
                          [](const auto& p) { return std::string(blob_kernel_info(p.param).name); });
 
+// A blob of four components or fewer meets them all without walking its
+// BVH. The same components and one more far away (five: the tree is
+// walked) give the same hits, bit for bit, and the same shadows.
+TEST(Blob, AFewComponentsAreMetWithoutTheTree) {
+    for (const BlobKernel kernel : {BlobKernel::Blinn, BlobKernel::Metaball, BlobKernel::Soft, BlobKernel::PovRay}) {
+        SCOPED_TRACE(blob_kernel_info(kernel).name);
+        const std::vector<BlobComponent>& all = random_blob(kernel, 11)->components();
+        // A negative one, two round ones, a cylinder: four, the most a leaf holds.
+        std::vector<BlobComponent> few{all[0], all[2], all[3], all[6]};
+        BlobComponent far = all[3];
+        far.center = {100, 100, 100};
+        std::vector<BlobComponent> more = few;
+        more.push_back(far);
+        const Blob direct(BlobDescription{"few", std::make_shared<const BlobModel>(kernel, 0.5, few), no_material, 1e-9, 1});
+        const Blob walked(BlobDescription{"more", std::make_shared<const BlobModel>(kernel, 0.5, more), no_material, 1e-9, 1});
+        TraceScratch scratch(1);
+        std::mt19937 random(7);
+        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        int hits = 0;
+        for (int i = 0; i < 2000; ++i) {
+            const Vec3d dir = normalize(Vec3d{u(random), u(random), u(random)});
+            const Ray ray{Vec3d{u(random), u(random), u(random)} - 6.0 * dir, dir};
+            const auto a = direct.first_hit(ray, 0.0, 20.0, scratch);
+            const auto b = walked.first_hit(ray, 0.0, 20.0, scratch);
+            ASSERT_EQ(a.has_value(), b.has_value()) << "ray " << i;
+            if (a) {
+                EXPECT_EQ(a->t, b->t) << "ray " << i;
+                ++hits;
+            }
+            EXPECT_EQ(direct.occluded(ray, 0.0, 20.0, scratch), walked.occluded(ray, 0.0, 20.0, scratch)) << "ray " << i;
+        }
+        EXPECT_GT(hits, 300);
+    }
+}
+
 TEST(Blob, ACylinderIsTheKernelOfTheDistanceToItsSegment) {
     // POV-Ray's kernel, strength 2, threshold 1: the surface is where the
     // distance d to the segment has (1 − d²/R²)² = 1/2.

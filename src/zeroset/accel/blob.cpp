@@ -15,6 +15,9 @@ namespace zeroset {
 namespace {
 
 constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
+// A blob of this many components or fewer (one BVH leaf) meets them all
+// without the tree's walk.
+constexpr std::size_t few_components = 4;
 
 /// The events' heap order: the earliest on top, and at equal t entries first.
 bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
@@ -350,8 +353,7 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
         return true;
     };
     const RaySizes sizes(ray);
-    bvh_->traverse_in_order(ray, span.t0, span.t1, s.queue, [&](std::uint32_t i, double limit) {
-        if (i == Bvh::frontier) return advance(limit) ? span.t1 : -std::numeric_limits<double>::infinity();
+    const auto meet = [&](std::uint32_t i) {
         on_ray(sizes, i, [&](const KernelOnRay& k) {
             if (!(k.t_out >= span.t0 && k.t_in <= span.t1)) return;
             const std::size_t before = s.events.size();
@@ -359,8 +361,17 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
             for (std::size_t j = before; j < s.events.size(); ++j)
                 std::push_heap(s.events.begin(), s.events.begin() + static_cast<std::ptrdiff_t>(j) + 1, later);
         });
-        return limit;
-    });
+    };
+    if (components_.size() <= few_components) {
+        for (std::uint32_t i = 0; i < components_.size(); ++i) meet(i);
+        advance(std::numeric_limits<double>::infinity());
+    } else {
+        bvh_->traverse_in_order(ray, span.t0, span.t1, s.queue, [&](std::uint32_t i, double limit) {
+            if (i == Bvh::frontier) return advance(limit) ? span.t1 : -std::numeric_limits<double>::infinity();
+            meet(i);
+            return limit;
+        });
+    }
     scratch.counters.blob_kernels += s.kernels.size();
     if (failed) {
         ++scratch.counters.failed_queries;
