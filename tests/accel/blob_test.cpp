@@ -218,7 +218,8 @@ INSTANTIATE_TEST_SUITE_P(EveryKernel, BlobAgainstExpression,
 TEST(Blob, AFewComponentsAreMetWithoutTheTree) {
     for (const BlobKernel kernel : {BlobKernel::Blinn, BlobKernel::Metaball, BlobKernel::Soft, BlobKernel::PovRay}) {
         SCOPED_TRACE(blob_kernel_info(kernel).name);
-        const std::vector<BlobComponent>& all = random_blob(kernel, 11)->components();
+        const auto model = random_blob(kernel, 11);
+        const std::vector<BlobComponent>& all = model->components();
         // A negative one, two round ones, a cylinder: four, the most a leaf holds.
         std::vector<BlobComponent> few{all[0], all[2], all[3], all[6]};
         BlobComponent far = all[3];
