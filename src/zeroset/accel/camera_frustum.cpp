@@ -32,6 +32,7 @@ bool CameraFrustum::misses(const Box3& box) const {
     }
     if (all_behind) return true;
     if (!all_in_front) return false;  // the box reaches the eye's plane: its projection is unbounded
+    if (!(std::isfinite(u_lo) && std::isfinite(u_hi) && std::isfinite(v_lo) && std::isfinite(v_hi))) return false;
     // The tile's rectangle, and a margin for the rounding of the projection
     // (a few units of its largest coordinate; 1e-9 of it is far more).
     const double tile_u0 = std::min(u0, u0 + columns * du), tile_u1 = std::max(u0, u0 + columns * du);
@@ -39,7 +40,6 @@ bool CameraFrustum::misses(const Box3& box) const {
     const double margin = 1e-9 * (1.0 + std::max({std::abs(u_lo), std::abs(u_hi), std::abs(v_lo), std::abs(v_hi),
                                                    std::abs(tile_u0), std::abs(tile_u1), std::abs(tile_v0),
                                                    std::abs(tile_v1)}));
-    if (!(std::isfinite(u_lo) && std::isfinite(u_hi) && std::isfinite(v_lo) && std::isfinite(v_hi))) return false;
     return u_hi < tile_u0 - margin || u_lo > tile_u1 + margin || v_hi < tile_v0 - margin || v_lo > tile_v1 + margin;
 }
 

@@ -97,10 +97,10 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
         if (root.t) return Crossing{root.t, false, *root.t, true};
         return std::nullopt;
     };
-    // A bracket with a sign change, at most 2ε: its first root (see first_root_of_bracket).
     // The segment being marched and the enclosure of H′ over it.
     double segment_a = span.t0, segment_b = span.t0;
     Interval segment_slope = Interval::entire();
+    // A bracket with a sign change, at most 2ε: its first root (see first_root_of_bracket).
     const auto settle = [&](double lo, double hi) -> Crossing {
         const bool in_segment = lo >= segment_a && hi <= segment_b;
         const Interval known = !in_segment ? Interval::entire() : side > 0.0 ? segment_slope : -segment_slope;
