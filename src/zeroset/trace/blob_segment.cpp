@@ -43,24 +43,24 @@ double mapped_magnitude(const Mat4& m, const Vec3d& v, bool point) {
 using Lanes = double __attribute__((vector_size(32)));
 using LanePolynomial = std::array<Lanes, BlobSegmentSolver::max_degree + 1>;
 
-/// K(u(τ)) for a kernel polynomial c in u and u(τ) a quadratic, by Horner's
-/// rule over polynomials — lane 0 with c, the others with |c|; returns the
-/// count of coefficients written to out.
-int compose(std::span<const double> c, const std::array<Lanes, 3>& u, LanePolynomial& out) {
-    // (Lanes are set in place: returning a 256-bit vector changes the ABI without AVX.)
-    const auto add_coefficient = [](Lanes& to, double k) { to += Lanes{k, std::abs(k), std::abs(k), 0.0}; };
-    out[0] = Lanes{};
-    add_coefficient(out[0], c.back());
-    int n = 1;
-    for (std::size_t i = c.size() - 1; i-- > 0;) {
-        LanePolynomial product{};  // out · u
-        for (int a = 0; a < n; ++a)
-            for (int j = 0; j < 3; ++j) product[static_cast<std::size_t>(a + j)] += out[static_cast<std::size_t>(a)] * u[static_cast<std::size_t>(j)];
-        n += 2;
-        std::copy_n(product.begin(), n, out.begin());
-        add_coefficient(out[0], c[i]);
+/// K(u(τ)) for a kernel polynomial c in u of `Size` coefficients and u(τ) a
+/// quadratic, by Horner's rule over polynomials — lane 0 with c, the others
+/// with |c|; writes 2·Size − 1 coefficients to out. The size is fixed at
+/// compile time so that every loop unrolls (it was a fifth of a blob ray).
+template <std::size_t Size>
+void compose(const std::array<Lanes, Size>& c, const std::array<Lanes, 3>& u, LanePolynomial& out) {
+    constexpr std::size_t n = 2 * Size - 1;
+    std::array<Lanes, n> result{};
+    result[0] = c[Size - 1];
+    for (std::size_t i = Size - 1; i-- > 0;) {
+        const std::size_t degree = 2 * (Size - 2 - i);  // result's before this step
+        std::array<Lanes, n> product{};  // result · u
+        for (std::size_t a = 0; a <= degree; ++a)
+            for (std::size_t j = 0; j < 3; ++j) product[a + j] += result[a] * u[j];
+        result = product;
+        result[0] += c[i];
     }
-    return n;
+    std::copy(result.begin(), result.end(), out.begin());
 }
 
 struct Enclosure {
@@ -121,6 +121,50 @@ void push_cut_at_nearest_approaches(std::span<const KernelOnRay> kernels, std::s
         end = cuts[j];
     }
     segments.push(ta, end, 1);
+}
+
+/// BlobSegmentSolver::polynomial for a kernel polynomial c in u of `Size`
+/// coefficients (POV-Ray's 3, soft objects' 4).
+template <std::size_t Size>
+int kernel_polynomial(std::span<const double> c, double threshold, std::span<const KernelOnRay> kernels,
+                      std::span<const std::uint32_t> active, double t_c, BlobSegmentSolver::Coefficients& value,
+                      BlobSegmentSolver::Coefficients& radius) {
+    constexpr std::size_t n = 2 * Size - 1;
+    std::array<Lanes, Size> lane_c{};
+    for (std::size_t i = 0; i < Size; ++i) lane_c[i] = Lanes{c[i], std::abs(c[i]), std::abs(c[i]), 0.0};
+    value.fill(0.0);
+    BlobSegmentSolver::Coefficients magnitude{}, perturbation{};
+    LanePolynomial lanes{};
+    for (const std::uint32_t i : active) {
+        const KernelOnRay& k = kernels[i];
+        const Vec3d q = k.q0 + t_c * k.qd;
+        // The error of q's coordinates: the ray's map, then q0 + t_c·qd.
+        const double q_error = k.q0_error + std::abs(t_c) * k.qd_error + 2.0 * unit_roundoff * (length(k.q0) + std::abs(t_c) * length(k.qd));
+        const Vec3d q_mag{std::abs(q.x), std::abs(q.y), std::abs(q.z)};
+        const Vec3d d_mag{std::abs(k.qd.x), std::abs(k.qd.y), std::abs(k.qd.z)};
+        const Vec3d q_up = q_mag + Vec3d{q_error, q_error, q_error};
+        const Vec3d d_up = d_mag + Vec3d{k.qd_error, k.qd_error, k.qd_error};
+        // u(τ) = |q + τ·qd|² for the term, the majorant with errors and the plain one.
+        const std::array<Lanes, 3> u{Lanes{dot(q, q), dot(q_up, q_up), dot(q_mag, q_mag), 0.0},
+                                     Lanes{2.0 * dot(q, k.qd), 2.0 * dot(q_up, d_up), 2.0 * dot(q_mag, d_mag), 0.0},
+                                     Lanes{dot(k.qd, k.qd), dot(d_up, d_up), dot(d_mag, d_mag), 0.0}};
+        compose<Size>(lane_c, u, lanes);
+        const double s = std::abs(k.strength);
+        for (std::size_t j = 0; j < n; ++j) {
+            const Lanes& l = lanes[j];
+            const double term = l[0], bound = l[1], plain = l[2];
+            value[j] -= k.strength * term;
+            magnitude[j] += s * bound;
+            // The majorant's growth bounds what the inputs' errors do.
+            perturbation[j] += s * (bound - plain);
+        }
+    }
+    value[0] += threshold;
+    magnitude[0] += threshold;
+    const double g = gamma(2 * (24 + static_cast<int>(active.size())));
+    for (std::size_t j = 0; j < n; ++j) radius[j] = (g * magnitude[j] + perturbation[j]) * (1.0 + 8.0 * unit_roundoff);
+    for (std::size_t j = n; j < radius.size(); ++j) radius[j] = 0.0;
+    return static_cast<int>(n);
 }
 
 }  // namespace
@@ -250,41 +294,8 @@ double kernel_value_on_ray(const BlobSegmentSettings& settings, const KernelOnRa
 int BlobSegmentSolver::polynomial(std::span<const KernelOnRay> kernels, std::span<const std::uint32_t> active,
                                   double t_c, Coefficients& value, Coefficients& radius) const {
     const std::span<const double> c = blob_kernel_info(settings_.kernel).polynomial;
-    const int n = 2 * static_cast<int>(c.size() - 1) + 1;
-    value.fill(0.0);
-    Coefficients magnitude{}, perturbation{};
-    LanePolynomial lanes{};
-    for (const std::uint32_t i : active) {
-        const KernelOnRay& k = kernels[i];
-        const Vec3d q = k.q0 + t_c * k.qd;
-        // The error of q's coordinates: the ray's map, then q0 + t_c·qd.
-        const double q_error = k.q0_error + std::abs(t_c) * k.qd_error + 2.0 * unit_roundoff * (length(k.q0) + std::abs(t_c) * length(k.qd));
-        const Vec3d q_mag{std::abs(q.x), std::abs(q.y), std::abs(q.z)};
-        const Vec3d d_mag{std::abs(k.qd.x), std::abs(k.qd.y), std::abs(k.qd.z)};
-        const Vec3d q_up = q_mag + Vec3d{q_error, q_error, q_error};
-        const Vec3d d_up = d_mag + Vec3d{k.qd_error, k.qd_error, k.qd_error};
-        // u(τ) = |q + τ·qd|² for the term, the majorant with errors and the plain one.
-        const std::array<Lanes, 3> u{Lanes{dot(q, q), dot(q_up, q_up), dot(q_mag, q_mag), 0.0},
-                                     Lanes{2.0 * dot(q, k.qd), 2.0 * dot(q_up, d_up), 2.0 * dot(q_mag, d_mag), 0.0},
-                                     Lanes{dot(k.qd, k.qd), dot(d_up, d_up), dot(d_mag, d_mag), 0.0}};
-        compose(c, u, lanes);
-        const double s = std::abs(k.strength);
-        for (int j = 0; j < n; ++j) {
-            const Lanes& l = lanes[static_cast<std::size_t>(j)];
-            const double term = l[0], bound = l[1], plain = l[2];
-            value[static_cast<std::size_t>(j)] -= k.strength * term;
-            magnitude[static_cast<std::size_t>(j)] += s * bound;
-            // The majorant's growth bounds what the inputs' errors do.
-            perturbation[static_cast<std::size_t>(j)] += s * (bound - plain);
-        }
-    }
-    value[0] += settings_.threshold;
-    magnitude[0] += settings_.threshold;
-    const double g = gamma(2 * (24 + static_cast<int>(active.size())));
-    for (int j = 0; j < n; ++j)
-        radius[static_cast<std::size_t>(j)] =
-            (g * magnitude[static_cast<std::size_t>(j)] + perturbation[static_cast<std::size_t>(j)]) * (1.0 + 8.0 * unit_roundoff);
-    return n;
+    if (c.size() == 3) return kernel_polynomial<3>(c, settings_.threshold, kernels, active, t_c, value, radius);
+    return kernel_polynomial<4>(c, settings_.threshold, kernels, active, t_c, value, radius);
 }
 
 MetaballPieces metaball_pieces(const KernelOnRay& k) {
