@@ -3,8 +3,10 @@
 // scenes. Two blobs of POV-Ray's kernel: POV-Ray's `blob1a.pov` (two
 // crossed cylinders and a negative sphere, turned −30° about x, seen from
 // its camera) and the 1 000-component cloud of bench/blobs/blob_scene.py's
-// layout (seeded here, not the same draw). Each iteration traces a 128×128
-// grid of rays over the scene's view; rays/s is the figure to compare.
+// layout (seeded here, not the same draw). Each iteration traces an eighth
+// of a 512×512 image's camera rays (32 768), with their tiles' frusta (tiles:1,
+// as the renderer's camera rays) or without (tiles:0: the BVH's walk);
+// rays/s is the figure to compare.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -20,20 +22,34 @@ namespace {
 using zeroset::BlobComponent;
 using zeroset::Vec3d;
 
-/// A pinhole camera's rays over a side × side grid, looking from `eye` at the
-/// origin with a vertical field of view of `fov` degrees.
-std::vector<zeroset::Ray> camera_rays(const Vec3d& eye, double fov, int side) {
+/// A pinhole camera looking from `eye` at the origin with a vertical field
+/// of view of `fov` degrees, over a side × side image in 16 × 16 tiles (what
+/// the renderer hands a blob with a camera ray): every eighth tile's rays,
+/// in a diagonal pattern over the whole view, each tile after its frustum.
+struct TiledRays {
+    std::vector<zeroset::Ray> rays;
+    std::vector<zeroset::CameraFrustum> tiles;  // tile k holds rays[256·k, 256·(k + 1))
+};
+
+TiledRays camera_rays(const Vec3d& eye, double fov, int side) {
+    constexpr int tile_side = 16;
     const Vec3d forward = zeroset::normalize(-eye);
     const Vec3d right = zeroset::normalize(zeroset::cross(Vec3d{0, 1, 0}, forward));
     const Vec3d up = zeroset::cross(forward, right);
-    const double half = std::tan(fov * M_PI / 360.0);
-    std::vector<zeroset::Ray> rays;
-    for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x) {
-            const double sx = (2.0 * (x + 0.5) / side - 1.0) * half, sy = (1.0 - 2.0 * (y + 0.5) / side) * half;
-            rays.push_back({eye, zeroset::normalize(forward + sx * right + sy * up)});
+    const double half = std::tan(fov * M_PI / 360.0), step = 2.0 * half / side;
+    TiledRays out;
+    for (int ty = 0; ty < side; ty += tile_side)
+        for (int tx = 0; tx < side; tx += tile_side) {
+            if ((tx + ty) / tile_side % 8 != 0) continue;
+            zeroset::CameraFrustum f{eye, forward, right, up, -half + tx * step, step, half - ty * step, -step,
+                                     tile_side, tile_side};
+            out.tiles.push_back(f);
+            for (int y = ty; y < ty + tile_side; ++y)
+                for (int x = tx; x < tx + tile_side; ++x)
+                    out.rays.push_back({eye, zeroset::normalize(forward + (f.u0 + (x - tx + 0.5) * step) * right +
+                                                                (f.v0 - (y - ty + 0.5) * step) * up)});
         }
-    return rays;
+    return out;
 }
 
 std::vector<BlobComponent> crossed_cylinders() {
@@ -66,26 +82,40 @@ std::vector<BlobComponent> cloud(int n) {
     return components;
 }
 
+/// Traces the blob's first hit along every ray; with `tiles`, each ray
+/// comes with its tile's frustum as a camera ray does.
 void trace(benchmark::State& state, std::vector<BlobComponent> components, const Vec3d& eye, double fov) {
+    const bool tiles = state.range(0) != 0;
     const auto model = std::make_shared<const zeroset::BlobModel>(zeroset::BlobKernel::PovRay, 0.5, std::move(components));
     const zeroset::Blob blob(zeroset::BlobDescription{"bench", model, zeroset::no_material, 1e-9, 1});
-    const std::vector<zeroset::Ray> rays = camera_rays(eye, fov, 128);
+    const TiledRays camera = camera_rays(eye, fov, 512);
     zeroset::TraceScratch scratch(1);
     std::size_t hits = 0;
+    zeroset::TraceCounters spent;
     for (auto _ : state) {
         hits = 0;
-        for (const zeroset::Ray& ray : rays) hits += blob.first_hit(ray, 0.0, 1e9, scratch).has_value();
+        const zeroset::TraceCounters before = scratch.counters;
+        for (std::size_t i = 0; i < camera.rays.size(); ++i) {
+            scratch.camera_frustum = tiles ? &camera.tiles[i / 256] : nullptr;
+            hits += blob.first_hit(camera.rays[i], 0.0, 1e9, scratch).has_value();
+        }
+        scratch.camera_frustum = nullptr;
+        spent = scratch.counters.since(before);
         benchmark::ClobberMemory();
     }
+    const auto per_ray = [&](std::uint64_t count) { return static_cast<double>(count) / static_cast<double>(camera.rays.size()); };
     state.counters["hits"] = static_cast<double>(hits);
-    state.counters["rays/s"] = benchmark::Counter(static_cast<double>(rays.size()), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["components/ray"] = per_ray(spent.blob_kernels);
+    state.counters["evaluations/ray"] = per_ray(spent.evaluations());
+    state.counters["rays/s"] =
+        benchmark::Counter(static_cast<double>(camera.rays.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void BM_BlobCrossedCylinders(benchmark::State& state) { trace(state, crossed_cylinders(), {0, 8, -15}, 36); }
-BENCHMARK(BM_BlobCrossedCylinders)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BlobCrossedCylinders)->ArgName("tiles")->Arg(0)->Unit(benchmark::kMillisecond);
 
 void BM_BlobCloud1000(benchmark::State& state) { trace(state, cloud(1000), {0, 6, -18}, 50); }
-BENCHMARK(BM_BlobCloud1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BlobCloud1000)->ArgName("tiles")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

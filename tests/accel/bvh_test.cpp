@@ -62,6 +62,37 @@ TEST(Bvh, VisitsExactlyTheBoxesTheRayEnters) {
     expect_every_entered_box_visited(bvh, boxes, 500, random);
 }
 
+TEST(Bvh, SelectVisitsEveryBoxInTheLeavesItKeeps) {
+    // Keep what meets a query box: every box that meets it must be visited
+    // (its leaf's bounds, and every node's above, meet it too), and most
+    // boxes far from it are not.
+    std::mt19937 random(11);
+    const std::vector<Box3> boxes = random_boxes(2000, random);
+    const Bvh bvh(boxes, 1);
+    std::uniform_real_distribution<double> position(-10.0, 10.0), size(0.5, 3.0);
+    for (int q = 0; q < 50; ++q) {
+        const Vec3d c{position(random), position(random), position(random)}, h{size(random), size(random), size(random)};
+        const Box3 query{c - h, c + h};
+        const auto meets = [&](const Box3& b) { return overlap(b, query).valid(); };
+        std::set<std::uint32_t> visited;
+        bvh.select(meets, [&](std::uint32_t i) {
+            visited.insert(i);
+            return true;
+        });
+        std::size_t meeting = 0;
+        for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+            if (!meets(boxes[i])) continue;
+            ++meeting;
+            EXPECT_TRUE(visited.contains(i)) << "query " << q << ", box " << i;
+        }
+        EXPECT_LT(visited.size(), meeting + 200) << "query " << q;  // pruned: not all 2 000
+    }
+    // Stopping: visit returns false at the third box.
+    int calls = 0;
+    bvh.select([](const Box3&) { return true; }, [&](std::uint32_t) { return ++calls < 3; });
+    EXPECT_EQ(calls, 3);
+}
+
 TEST(Bvh, ShrinkingTMaxFindsTheNearestBox) {
     std::mt19937 random(7);
     const std::vector<Box3> boxes = random_boxes(5000, random);

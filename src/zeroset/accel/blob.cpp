@@ -18,6 +18,9 @@ constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units 
 // A blob of this many components or fewer (one BVH leaf) meets them all
 // without the tree's walk.
 constexpr std::size_t few_components = 4;
+// A camera tile that sees more components than this walks the BVH: a ray
+// that meets nothing walks its tile's whole list.
+constexpr std::size_t max_tile_list = 128;
 
 /// The events' heap order: the earliest on top, and at equal t entries first.
 bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
@@ -49,7 +52,7 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
         const Vec3d end = c.end.value_or(c.center), axis = end - c.center;
         components_.push_back({static_cast<std::uint32_t>(i), sphere, c.is_cylinder(), reach, c.strength, c.blobbiness,
                                c.center, 1.0 / c.radius, end, axis, dot(axis, axis), length(axis), length(c.center),
-                               max_abs(c.center), max_abs(end)});
+                               max_abs(c.center), max_abs(end), c.radius * std::sqrt(reach)});
         boxes.push_back(m.reach_box(i, reach));
         if (!is_bounded(boxes.back()) || !std::isfinite(boxes.back().diagonal()))
             throw std::invalid_argument("component " + std::to_string(i + 1) + ": its reach is wider than a double can measure");
@@ -82,6 +85,59 @@ BlobScratch& Blob::scratch_for(TraceScratch& scratch) const {
     return *slot;
 }
 
+Box3 Blob::reach_box(std::uint32_t i) const {
+    const Component& c = components_[i];
+    if (!c.sphere) return model().reach_box(c.index, c.reach);
+    // The centre ± R·√reach, and a few units for the rounding of both.
+    const double half = c.reach_length * (1.0 + 1e-12) + u4 * (c.center_largest + c.reach_length);
+    return {c.center - Vec3d{half, half, half}, c.center + Vec3d{half, half, half}};
+}
+
+const BlobScratch::TileList* Blob::tile_list(const Ray& ray, const CameraFrustum& tile, BlobScratch& s) const {
+    ++s.tile_list_uses;
+    BlobScratch::TileList* list = nullptr;
+    BlobScratch::TileList* oldest = &s.tile_lists[0];
+    for (BlobScratch::TileList& l : s.tile_lists) {
+        if (l.blob == this && l.tile == tile) list = &l;
+        if (l.last_use < oldest->last_use) oldest = &l;
+    }
+    if (!list) {
+        list = oldest;
+        list->blob = this;
+        list->tile = tile;
+        fill_tile_list(*list);
+    }
+    list->last_use = s.tile_list_uses;
+    return list->usable && tile.holds(ray, list->basis) ? list : nullptr;
+}
+
+void Blob::fill_tile_list(BlobScratch::TileList& list) const {
+    const CameraFrustum& tile = list.tile;
+    list.entries.clear();
+    const auto basis = tile.dual_basis();
+    list.usable = basis.has_value();
+    if (!list.usable) return;
+    list.basis = *basis;
+    bvh_->select([&](const Box3& box) { return !tile.misses(box, *basis); },
+                 [&](std::uint32_t i) {
+                     const Box3 box = reach_box(i);
+                     if (tile.misses(box, *basis)) return true;
+                     if (list.entries.size() == max_tile_list) {
+                         list.usable = false;
+                         return false;
+                     }
+                     // The distance from the eye to the box, a little short for its rounding.
+                     Vec3d out;
+                     for (int axis = 0; axis < 3; ++axis)
+                         out[axis] = std::max({box.lo[axis] - tile.origin[axis], 0.0, tile.origin[axis] - box.hi[axis]});
+                     list.entries.push_back({length(out) * (1.0 - 8.0 * u4), i});
+                     return true;
+                 });
+    if (list.usable)
+        std::sort(list.entries.begin(), list.entries.end(),
+                  [](const BlobScratch::TileList::Entry& a, const BlobScratch::TileList::Entry& b) { return a.nearest < b.nearest; });
+}
+
 std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay& q, Span part) const {
     std::optional<ReachOnRay> reach;
     if (dot(q.qd, q.qd) > 0.0) {
@@ -106,7 +162,20 @@ std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay
 
 Blob::RaySizes::RaySizes(const Ray& r)
     : ray(r), origin_length(length(r.origin)), dir_length(length(r.dir)), origin_largest(max_abs(r.origin)),
-      dir_largest(max_abs(r.dir)) {}
+      dir_largest(max_abs(r.dir)), inverse_dir_square(1.0 / dot(r.dir, r.dir)) {}
+
+bool Blob::passes_beside(const RaySizes& sizes, const Vec3d& point, double point_largest, double radius) {
+    const Ray& ray = sizes.ray;
+    const Vec3d offset = ray.origin - point;
+    const double nearest = -dot(offset, ray.dir) * sizes.inverse_dir_square;
+    const Vec3d closest = offset + nearest * ray.dir;
+    // Both this and reach_on_ray round within a few units of these sizes;
+    // 10⁻⁹ of them keeps every component the exact test could keep. (NaN
+    // compares false: not beside.)
+    const double keep =
+        radius + 1e-9 * (radius + sizes.origin_largest + point_largest + std::abs(nearest) * sizes.dir_largest);
+    return dot(closest, closest) > keep * keep;
+}
 
 Blob::MappedRay Blob::about_point(const RaySizes& sizes, const Component& c, const Vec3d& point, double point_largest) {
     const Ray& ray = sizes.ray;
@@ -121,6 +190,7 @@ void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add) const {
     const Component& c = components_[i];
     const Span everywhere{-infinity, infinity};
     if (c.sphere) {
+        if (passes_beside(sizes, c.center, c.center_largest, c.reach_length)) return;
         if (const auto k = part_on_ray(c, about_point(sizes, c, c.center, c.center_largest), everywhere)) add(*k);
         return;
     }
@@ -362,9 +432,23 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
                 std::push_heap(s.events.begin(), s.events.begin() + static_cast<std::ptrdiff_t>(j) + 1, later);
         });
     };
+    const BlobScratch::TileList* list =
+        components_.size() > few_components && scratch.camera_frustum ? tile_list(ray, *scratch.camera_frustum, s) : nullptr;
     if (components_.size() <= few_components) {
         for (std::uint32_t i = 0; i < components_.size(); ++i) meet(i);
         advance(std::numeric_limits<double>::infinity());
+    } else if (list) {
+        // The ray leaves the eye: a component no nearer it than `nearest`
+        // enters at t ≥ nearest/|dir|, and so does every one after it.
+        const double per_length = (1.0 - 8.0 * u4) / length(ray.dir);
+        bool going = true;
+        for (const BlobScratch::TileList::Entry& e : list->entries) {
+            const double enters = e.nearest * per_length;
+            if (enters > span.t1) break;
+            if (!s.events.empty() && s.events.front().t < enters && !(going = advance(enters))) break;
+            meet(e.component);
+        }
+        if (going) advance(std::numeric_limits<double>::infinity());
     } else {
         bvh_->traverse_in_order(ray, span.t0, span.t1, s.queue, [&](std::uint32_t i, double limit) {
             if (i == Bvh::frontier) return advance(limit) ? span.t1 : -std::numeric_limits<double>::infinity();

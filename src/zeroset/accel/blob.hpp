@@ -12,12 +12,14 @@
 // components the ray meets, not with their total.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "zeroset/accel/bvh.hpp"
+#include "zeroset/accel/camera_frustum.hpp"
 #include "zeroset/accel/primitive.hpp"
 #include "zeroset/expr/blob_model.hpp"
 #include "zeroset/trace/blob_segment.hpp"
@@ -65,6 +67,22 @@ struct BlobScratch {
     const void* hit_blob = nullptr;
     Vec3d hit_point{};
     std::vector<std::uint32_t> hit_components;
+    /// The components a camera tile's rays can meet, nearest the eye first
+    /// (Blob::tile_list), for the last few tiles and blobs.
+    struct TileList {
+        const void* blob = nullptr;
+        CameraFrustum tile;
+        CameraFrustum::DualBasis basis;
+        struct Entry {
+            double nearest;  // no point of the component's reach is nearer the eye
+            std::uint32_t component;
+        };
+        std::vector<Entry> entries;
+        bool usable = false;  // false: too long to walk; the BVH serves the tile's rays
+        std::uint64_t last_use = 0;
+    };
+    std::array<TileList, 4> tile_lists;
+    std::uint64_t tile_list_uses = 0;
 };
 
 /// What the render summary says about a blob.
@@ -118,6 +136,7 @@ private:
         double center_length;
         double center_largest;  // the largest |coordinate| of center, and of end
         double end_largest;
+        double reach_length;    // R·√reach: how far from its center (or axis) it counts
     };
     /// The ray with the sizes every component's mapping error is made of,
     /// worked out once a query.
@@ -125,6 +144,7 @@ private:
         const Ray& ray;
         double origin_length, dir_length;
         double origin_largest, dir_largest;  // largest |coordinate|
+        double inverse_dir_square;           // 1/|dir|²
         explicit RaySizes(const Ray& r);
     };
     [[nodiscard]] const Mat4& to_kernel(const Component& c) const { return model().to_kernel(c.index); }
@@ -135,6 +155,11 @@ private:
     /// ray, the kernel of a distance to a point or to the axis line).
     template <class Add>
     void on_ray(const RaySizes& ray, std::uint32_t i, Add&& add) const;
+    /// Whether the ray passes farther than `radius` from `point` (whose
+    /// largest |coordinate| is given) by a margin far wider than the
+    /// rounding of the exact test: a cheap rejection in the blob's own space
+    /// before a component is mapped into its kernel's.
+    [[nodiscard]] static bool passes_beside(const RaySizes& ray, const Vec3d& point, double point_largest, double radius);
     /// The ray in a kernel's space, q(t) = q0 + t·qd, with bounds on the
     /// rounding of each coordinate.
     struct MappedRay {
@@ -149,6 +174,17 @@ private:
     [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part) const;
 
     BlobScratch& scratch_for(TraceScratch& scratch) const;
+    /// For a camera ray of `tile`: the tile's components nearest first,
+    /// made at the tile's first ray — camera rays share the eye, so a walk
+    /// down this list meets the components in the order the BVH's would,
+    /// without its heap. Nothing when the ray is not certainly one of the
+    /// tile's, or when the tile sees too many components for a walk to pay.
+    const BlobScratch::TileList* tile_list(const Ray& ray, const CameraFrustum& tile, BlobScratch& s) const;
+    /// The list of its tile's components: those whose reach box the tile's
+    /// rays may meet, by their boxes' distance from the eye.
+    void fill_tile_list(BlobScratch::TileList& list) const;
+    /// A box about component i's reach (rounded outward).
+    [[nodiscard]] Box3 reach_box(std::uint32_t i) const;
     /// What a search looks for: the first hit, or any t on or in the solid.
     enum class Query { First, Any };
     /// The query's t in `span` (a part of the blob's clip), or nothing;

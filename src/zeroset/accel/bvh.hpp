@@ -74,6 +74,32 @@ public:
     void traverse_in_order(const Ray& ray, double t_min, double t_max, Queue& queue, Visitor visit,
                            void* context) const;
 
+    /// Calls visit(i) for the boxes i of every leaf whose bounds `keep`
+    /// accepts, skipping the subtrees whose bounds it rejects: a culling
+    /// query (a camera tile's frustum). `keep(const Box3&)` must accept any
+    /// box that holds one it accepts; `visit` returns false to stop.
+    template <class Keep, class Visit>
+    void select(Keep&& keep, Visit&& visit) const {
+        if (order_.empty() || !keep(root_box_)) return;
+        std::array<Child, width * max_depth> pending;  // each level adds at most width − 1 to what it takes
+        std::size_t size = 0;
+        pending[size++] = root_;
+        while (size > 0) {
+            const Child c = pending[--size];
+            if (c.count > 0) {
+                for (std::uint32_t k = 0; k < c.count; ++k)
+                    if (!visit(order_[c.index + k])) return;
+                continue;
+            }
+            const Node& node = nodes_[c.index];
+            for (int k = width; k-- > 0;) {  // the first child on top
+                if (node.child[k].index == empty_slot) continue;
+                const Box3 box{{node.lo[0][k], node.lo[1][k], node.lo[2][k]}, {node.hi[0][k], node.hi[1][k], node.hi[2][k]}};
+                if (keep(box)) pending[size++] = node.child[k];
+            }
+        }
+    }
+
     [[nodiscard]] std::size_t node_count() const { return nodes_.size(); }
     [[nodiscard]] std::size_t depth() const { return depth_; }
     [[nodiscard]] bool empty() const { return order_.empty(); }

@@ -9,6 +9,8 @@
 // the tile's rays in its own coordinates.
 #pragma once
 
+#include <optional>
+
 #include "zeroset/math/box3.hpp"
 #include "zeroset/math/mat4.hpp"
 #include "zeroset/math/vec3.hpp"
@@ -42,12 +44,33 @@ struct CameraFrustum {
     [[nodiscard]] double depth_of(const Vec3d& p) const { return dot(depth_form(), p - origin); }
     /// How fast depth grows along direction d: a ray's depth is t times this.
     [[nodiscard]] double depth_rate(const Vec3d& d) const { return dot(depth_form(), d); }
+    /// The dual basis of (forward, right, up): a point's offset w from the
+    /// eye is s·forward + (s·u)·right + (s·v)·up with s = to_s·w, s·u =
+    /// to_su·w and s·v = to_sv·w. Nothing when the three are degenerate.
+    struct DualBasis {
+        Vec3d to_s, to_su, to_sv;
+    };
+    [[nodiscard]] std::optional<DualBasis> dual_basis() const;
     /// True when no ray of the tile meets the box (at any t ≥ 0): it lies
     /// behind the eye, or in front of it and projected wholly beside the
     /// tile's rectangle of the image plane. False when that is not certain.
+    /// (With the tile's dual basis, when many boxes are asked.)
     [[nodiscard]] bool misses(const Box3& box) const;
+    [[nodiscard]] bool misses(const Box3& box, const DualBasis& basis) const;
+    /// True when the ray is one of the tile's: it leaves the origin,
+    /// exactly, through the tile's rectangle of the image plane (within a
+    /// margin far narrower than the one misses() allows), so it meets no box
+    /// that misses() culls. False when that is not certain.
+    [[nodiscard]] bool holds(const Ray& ray, const DualBasis& basis) const;
 
 private:
+    /// The tile's rectangle [u_lo, u_hi] × [v_lo, v_hi] and a margin for the
+    /// rounding of a projection whose coordinates reach `largest`.
+    struct Rectangle {
+        double u_lo, u_hi, v_lo, v_hi;
+        [[nodiscard]] double margin(double largest) const;
+    };
+    [[nodiscard]] Rectangle rectangle() const;
     [[nodiscard]] Vec3d depth_form() const {
         const Vec3d n = cross(right, up);
         return n / dot(forward, n);
