@@ -228,13 +228,40 @@ void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add) const {
     const MappedRay across{(offset - s0 * w) * c.inverse_radius, (ray.dir - sd * w) * c.inverse_radius,
                            2.0 * u4 * (sizes.origin_length + c.center_length + std::abs(s0) * c.axis_length) * c.inverse_radius,
                            2.0 * u4 * (sizes.dir_length + std::abs(sd) * c.axis_length) * c.inverse_radius};
+    // Each round end lies in the tube of reach about the axis line: a ray
+    // that misses the tube meets no part, and an end whose part of the ray
+    // lies outside the tube need not be mapped.
+    const std::optional<Span> tube = tube_on_ray(across, c.reach);
+    if (!tube) return;
+    const auto within = [&](const Span& part) { return part.t0 <= tube->t1 && part.t1 >= tube->t0; };
     // In the order the ray meets them, so that the events come sorted when they can.
     const bool forwards = sd >= 0.0;
+    const Span& first = forwards ? start : finish;
+    const Span& last = forwards ? finish : start;
     const auto about_start = [&] { return about_point(sizes, c, c.center, c.center_largest); };
     const auto about_end = [&] { return about_point(sizes, c, c.end, c.end_largest); };
-    if (const auto k = part_on_ray(c, forwards ? about_start() : about_end(), forwards ? start : finish)) add(*k);
+    if (within(first))
+        if (const auto k = part_on_ray(c, forwards ? about_start() : about_end(), first)) add(*k);
     if (const auto k = part_on_ray(c, across, body)) add(*k);
-    if (const auto k = part_on_ray(c, forwards ? about_end() : about_start(), forwards ? finish : start)) add(*k);
+    if (within(last))
+        if (const auto k = part_on_ray(c, forwards ? about_end() : about_start(), last)) add(*k);
+}
+
+std::optional<Span> Blob::tube_on_ray(const MappedRay& across, double reach) {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    const double a2 = dot(across.qd, across.qd);
+    if (!(a2 > 0.0)) return Span{-infinity, infinity};  // along the axis (or NaN): not decided here
+    const double nearest = -dot(across.q0, across.qd) / a2;
+    const Vec3d closest = across.q0 + nearest * across.qd;
+    // The radius, wider by the coordinates' errors (twice over) and their
+    // rounding here, and 10⁻⁹ of itself: the parts' own tests round far less.
+    const double error = across.q0_error + std::abs(nearest) * across.qd_error +
+                         4.0 * u4 * (max_abs(across.q0) + std::abs(nearest) * max_abs(across.qd));
+    const double radius = std::sqrt(reach) * (1.0 + 1e-9) + 2.0 * error;
+    const double u_min = dot(closest, closest);
+    if (!(u_min <= radius * radius)) return u_min > radius * radius ? std::nullopt : std::optional<Span>(Span{-infinity, infinity});
+    const double half = std::sqrt((radius * radius - u_min) / a2) * (1.0 + 1e-9) + 1e-9 * std::abs(nearest);
+    return Span{nearest - half, nearest + half};
 }
 
 void Blob::gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, TraceScratch& scratch) const {

@@ -170,6 +170,10 @@ private:
     /// |coordinate| is given): q = (p − point)/R.
     [[nodiscard]] static MappedRay about_point(const RaySizes& ray, const Component& c, const Vec3d& point,
                                                double point_largest);
+    /// Where the ray, mapped about a cylinder's axis line, is within its
+    /// reach of the line, widened past any rounding (the whole ray when
+    /// that is not decided); nothing when it never is.
+    [[nodiscard]] static std::optional<Span> tube_on_ray(const MappedRay& across, double reach);
     /// The component's kernel along the mapped ray, within reach and the span `part`.
     [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part) const;
 
