@@ -214,7 +214,9 @@ INSTANTIATE_TEST_SUITE_P(EveryKernel, BlobAgainstExpression,
 
 // A blob of four components or fewer meets them all without walking its
 // BVH. The same components and one more far away (five: the tree is
-// walked) give the same hits, bit for bit, and the same shadows.
+// walked) give the same hits — to rounding: the far one widens the blob's
+// scale, and with it the width at which a crossing's Newton stops — and the
+// same shadows.
 TEST(Blob, AFewComponentsAreMetWithoutTheTree) {
     for (const BlobKernel kernel : {BlobKernel::Blinn, BlobKernel::Metaball, BlobKernel::Soft, BlobKernel::PovRay}) {
         SCOPED_TRACE(blob_kernel_info(kernel).name);
@@ -239,7 +241,7 @@ TEST(Blob, AFewComponentsAreMetWithoutTheTree) {
             const auto b = walked.first_hit(ray, 0.0, 20.0, scratch);
             ASSERT_EQ(a.has_value(), b.has_value()) << "ray " << i;
             if (a) {
-                EXPECT_EQ(a->t, b->t) << "ray " << i;
+                EXPECT_NEAR(a->t, b->t, 1e-12 * a->t) << "ray " << i;
                 ++hits;
             }
             EXPECT_EQ(direct.occluded(ray, 0.0, 20.0, scratch), walked.occluded(ray, 0.0, 20.0, scratch)) << "ray " << i;

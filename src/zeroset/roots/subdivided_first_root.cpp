@@ -63,7 +63,7 @@ PossibleRoot scan(PolynomialEnclosure f, double a, double b) {
 /// The subdivision with coefficient arrays of `Capacity` (> the degree).
 template <int Capacity>
 PossibleRoot subdivide(PolynomialEnclosure f, double t0, double t1, const PolynomialScratch& bernstein,
-                       double magnitude, PossibleRoot r) {
+                       double magnitude, double tolerance, PossibleRoot r) {
     struct Piece {
         double a, b;
         int depth;
@@ -108,7 +108,7 @@ PossibleRoot subdivide(PolynomialEnclosure f, double t0, double t1, const Polyno
             if (lo.value > 0.0 && hi.value < 0.0) {
                 r.found = true;
                 r.sign_change = true;
-                r.t = monotone_root(f.value, lo, hi, r.evaluations, 0.0, control_polygon_crossing(b, n, piece.a, piece.b));
+                r.t = monotone_root(f.value, lo, hi, r.evaluations, tolerance, control_polygon_crossing(b, n, piece.a, piece.b));
                 return r;
             }
         }
@@ -133,7 +133,7 @@ PossibleRoot subdivide(PolynomialEnclosure f, double t0, double t1, const Polyno
 
 }  // namespace
 
-PossibleRoot first_possible_root_subdividing(PolynomialEnclosure f, double t0, double t1) {
+PossibleRoot first_possible_root_subdividing(PolynomialEnclosure f, double t0, double t1, double tolerance) {
     PossibleRoot r;
     const int n = static_cast<int>(f.value.size()) - 1;
     const PolynomialSample start = sample_polynomial(f.value, t0);
@@ -157,8 +157,8 @@ PossibleRoot first_possible_root_subdividing(PolynomialEnclosure f, double t0, d
     double magnitude = 0.0;
     const PolynomialScratch bernstein = to_bernstein(f.value, n, t0, t1, magnitude);
     ++r.evaluations;
-    if (n < 8) return subdivide<8>(f, t0, t1, bernstein, magnitude, r);
-    return subdivide<max_polynomial_degree + 1>(f, t0, t1, bernstein, magnitude, r);
+    if (n < 8) return subdivide<8>(f, t0, t1, bernstein, magnitude, tolerance, r);
+    return subdivide<max_polynomial_degree + 1>(f, t0, t1, bernstein, magnitude, tolerance, r);
 }
 
 }  // namespace zeroset

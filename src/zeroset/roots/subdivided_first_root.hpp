@@ -31,7 +31,9 @@ namespace zeroset {
 /// monotone one, and a dip within R before a crossing that the signs prove
 /// simple is no hit (F has that one root there). A span where F̂ starts
 /// below 0 is scanned whole, as first_possible_root does. Counts
-/// conversions, splits and samples as evaluations.
-PossibleRoot first_possible_root_subdividing(PolynomialEnclosure f, double t0, double t1);
+/// conversions, splits and samples as evaluations. A crossing's Newton
+/// stops once a step is within `tolerance` (and shrinking), after one more
+/// step: with 0, when the steps reach F̂'s rounding noise.
+PossibleRoot first_possible_root_subdividing(PolynomialEnclosure f, double t0, double t1, double tolerance = 0.0);
 
 }  // namespace zeroset

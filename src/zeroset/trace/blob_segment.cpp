@@ -331,7 +331,7 @@ HitStatus BlobSegmentSolver::polynomial_roots(std::span<const KernelOnRay> kerne
     const PolynomialEnclosure enclosure{f, std::span<const double>(radius.data(), static_cast<std::size_t>(n))};
     const auto at = [&](double s) { return std::clamp(t_c + s, ta, tb); };
     if (first_only) {  // as the polynomial method's first hit
-        const PossibleRoot r = first_possible_root_subdividing(enclosure, s0, s1);
+        const PossibleRoot r = first_possible_root_subdividing(enclosure, s0, s1, settings_.tangent_width);
         counters.point_evaluations += static_cast<std::uint64_t>(r.evaluations);
         if (!r.found) return HitStatus::NoHit;
         roots.push_back(at(r.t));

@@ -112,7 +112,7 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
     // crossings, and scans what it leaves undecided over the fast solver's
     // extrema (subdivided_first_root.hpp).
     if (settings_.polynomial_solver == PolynomialSolver::Fast)
-        return answer(first_possible_root_subdividing(enclosure, c.s0, c.s1));
+        return answer(first_possible_root_subdividing(enclosure, c.s0, c.s1, settings_.tangent_width / length(h.ray().dir)));
 
     // Any other solver: most spans hold no root (rays that pass the surface
     // by within its bounds), which the Bernstein test settles at once. Else
