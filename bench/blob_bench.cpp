@@ -6,7 +6,8 @@
 // layout (seeded here, not the same draw). Each iteration traces an eighth
 // of a 512×512 image's camera rays (32 768), with their tiles' frusta (tiles:1,
 // as the renderer's camera rays) or without (tiles:0: the BVH's walk);
-// rays/s is the figure to compare.
+// rays/s is the figure to compare. The cloud's shadow rays (from those
+// rays' hits towards the light) are timed on their own.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -111,11 +112,47 @@ void trace(benchmark::State& state, std::vector<BlobComponent> components, const
         benchmark::Counter(static_cast<double>(camera.rays.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
 
+/// Whether the shadow rays toward `light` from the camera rays' hits (each
+/// started a hair off the surface, as shading does) are blocked.
+void shadows(benchmark::State& state, std::vector<BlobComponent> components, const Vec3d& eye, double fov,
+             const Vec3d& light) {
+    const auto model = std::make_shared<const zeroset::BlobModel>(zeroset::BlobKernel::PovRay, 0.5, std::move(components));
+    const zeroset::Blob blob(zeroset::BlobDescription{"bench", model, zeroset::no_material, 1e-9, 1});
+    zeroset::TraceScratch scratch(1);
+    std::vector<zeroset::Ray> rays;
+    std::vector<double> lengths;
+    for (const zeroset::Ray& ray : camera_rays(eye, fov, 512).rays)
+        if (const auto hit = blob.first_hit(ray, 0.0, 1e9, scratch)) {
+            const Vec3d p = ray.at(hit->t);
+            const Vec3d normal = blob.local_normal(hit->surface, scratch);
+            const Vec3d origin = p + normal * (1e-4 * blob.bounds().diagonal());
+            rays.push_back({origin, zeroset::normalize(light - origin)});
+            lengths.push_back(zeroset::length(light - origin));
+        }
+    std::size_t blocked = 0;
+    zeroset::TraceCounters spent;
+    for (auto _ : state) {
+        blocked = 0;
+        const zeroset::TraceCounters before = scratch.counters;
+        for (std::size_t i = 0; i < rays.size(); ++i) blocked += blob.occluded(rays[i], 0.0, lengths[i], scratch);
+        spent = scratch.counters.since(before);
+        benchmark::ClobberMemory();
+    }
+    const auto per_ray = [&](std::uint64_t count) { return static_cast<double>(count) / static_cast<double>(rays.size()); };
+    state.counters["blocked"] = static_cast<double>(blocked) / static_cast<double>(rays.size());
+    state.counters["components/ray"] = per_ray(spent.blob_kernels);
+    state.counters["evaluations/ray"] = per_ray(spent.evaluations());
+    state.counters["rays/s"] = benchmark::Counter(static_cast<double>(rays.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+
 void BM_BlobCrossedCylinders(benchmark::State& state) { trace(state, crossed_cylinders(), {0, 8, -15}, 36); }
 BENCHMARK(BM_BlobCrossedCylinders)->ArgName("tiles")->Arg(0)->Unit(benchmark::kMillisecond);
 
 void BM_BlobCloud1000(benchmark::State& state) { trace(state, cloud(1000), {0, 6, -18}, 50); }
 BENCHMARK(BM_BlobCloud1000)->ArgName("tiles")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_BlobCloud1000Shadows(benchmark::State& state) { shadows(state, cloud(1000), {0, 6, -18}, 50, {-20, 25, -15}); }
+BENCHMARK(BM_BlobCloud1000Shadows)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
