@@ -306,6 +306,45 @@ TEST(Blob, ACameraTilesRaysMeetTheComponentsByItsList) {
     }
 }
 
+// A shadow ray is first tried against the components in reach where the
+// last one found the inside (all strengths positive: their field alone is a
+// lower bound). Rays from a grid of points towards a light, neighbours in
+// turn, answer as each does with a scratch of its own; the cache settled
+// many of them. A blob with a negative component never uses it.
+TEST(Blob, AShadowRayIsFirstTriedAgainstTheLastBlockersComponents) {
+    for (const bool negative : {false, true}) {
+        SCOPED_TRACE(negative ? "a negative component" : "all positive");
+        std::vector<BlobComponent> components;
+        std::mt19937 random(21);
+        std::uniform_real_distribution<double> place(-3.0, 3.0), size(0.5, 0.9);
+        for (int i = 0; i < 150; ++i) {
+            BlobComponent c;
+            c.center = {place(random), place(random), place(random)};
+            c.radius = size(random);
+            if (negative && i == 7) c.strength = -0.5;
+            components.push_back(c);
+        }
+        const Blob blob(BlobDescription{"cloud", std::make_shared<const BlobModel>(BlobKernel::PovRay, 0.5, components), no_material, 1e-9, 1});
+        const Vec3d light{-20, 25, -15};
+        TraceScratch shared(1);
+        int blocked = 0, rays = 0;
+        for (int y = 0; y < 40; ++y)
+            for (int x = 0; x < 40; ++x) {
+                const Vec3d from{-3.5 + 0.175 * x, -3.5 + 0.175 * y, 0.3 * std::sin(x * 0.7 + y)};
+                const Ray ray{from, normalize(light - from)};
+                const double far = length(light - from);
+                TraceScratch alone(1);
+                const bool expected = blob.occluded(ray, 1e-6, far, alone);
+                ASSERT_EQ(blob.occluded(ray, 1e-6, far, shared), expected) << "ray " << x << ", " << y;
+                blocked += expected;
+                ++rays;
+            }
+        EXPECT_GT(blocked, rays / 5);
+        if (negative) EXPECT_EQ(shared.blob()->blocked_by_cache, 0u);
+        else EXPECT_GT(shared.blob()->blocked_by_cache, static_cast<std::uint64_t>(blocked / 3));
+    }
+}
+
 TEST(Blob, ACylinderIsTheKernelOfTheDistanceToItsSegment) {
     // POV-Ray's kernel, strength 2, threshold 1: the surface is where the
     // distance d to the segment has (1 − d²/R²)² = 1/2.

@@ -59,6 +59,8 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
         stats_.reach_radius = std::max(stats_.reach_radius, std::sqrt(reach));
     }
     bvh_ = std::make_unique<Bvh>(boxes, description_.threads);
+    positive_ = !description_.metaball_quadratics &&
+                std::all_of(m.components().begin(), m.components().end(), [](const BlobComponent& c) { return c.strength > 0.0; });
     scale_ = std::max(bounds_.diagonal(), 1e-300);
     const RootFinderSettings tolerances = settings_for_scale(scale_);
     if (description_.metaball_quadratics && m.kernel() != BlobKernel::Metaball)
@@ -376,7 +378,54 @@ std::optional<Hit> Blob::first_hit(const Ray& ray, double t_min, double t_max, T
 
 bool Blob::occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
     const auto span = clip(ray, t_min, t_max);
-    return span && search(ray, *span, Query::Any, scratch_for(scratch), scratch).has_value();
+    if (!span) return false;
+    BlobScratch& s = scratch_for(scratch);
+    if (blocked_as_before(ray, *span, s)) {
+        ++s.blocked_by_cache;
+        return true;
+    }
+    const std::optional<double> inside = search(ray, *span, Query::Any, s, scratch);
+    if (inside) remember_blocker(ray, *inside, s);
+    return inside.has_value();
+}
+
+void Blob::remember_blocker(const Ray& ray, double t, BlobScratch& s) const {
+    s.blocker_blob = nullptr;
+    if (!positive_) return;
+    s.blocker_components.clear();
+    for (const std::uint32_t k : s.active) {
+        const std::uint32_t i = s.kernels[k].component;
+        if (!components_[i].sphere) return;  // only round ones: their bound below is simple
+        s.blocker_components.push_back(i);
+    }
+    if (s.blocker_components.empty() || s.blocker_components.size() > 8) return;
+    s.blocker_blob = this;
+    s.blocker_point = ray.at(t);
+}
+
+bool Blob::blocked_as_before(const Ray& ray, Span span, const BlobScratch& s) const {
+    if (s.blocker_blob != this) return false;
+    // The ray's point nearest the last inside point, within the span.
+    const double t = std::clamp(dot(s.blocker_point - ray.origin, ray.dir) / dot(ray.dir, ray.dir), span.t0, span.t1);
+    if (!(t >= span.t0 && t <= span.t1)) return false;  // NaN
+    const Vec3d p = ray.at(t);
+    // p is off the ray's true point by rounding: a few units of its size.
+    const double off = 4.0 * u4 * (max_abs(ray.origin) + std::abs(t) * max_abs(ray.dir));
+    double field = 0.0, error = 0.0;
+    for (const std::uint32_t i : s.blocker_components) {
+        const Component& c = components_[i];
+        const Vec3d q = (p - c.center) * c.inverse_radius;
+        const double u = dot(q, q);
+        if (!(u <= c.reach)) continue;
+        const KernelValue k = kernel_at(settings_.kernel, u, c.blobbiness);
+        field += c.strength * k.value;
+        // What p's offset and q's rounding (|q| off by (off + |p| + |c|)·u4/R) do to u, and so to K, to first order
+        // and with room to spare; then the kernel's own rounding.
+        const double q_off = (off + 2.0 * u4 * (max_abs(p) + c.center_largest)) * c.inverse_radius;
+        error += c.strength * (std::abs(k.slope) * 4.0 * (std::sqrt(u) + q_off) * q_off + u4 * 4.0 * std::abs(k.value));
+    }
+    // Inside when the field provably reaches T there (the others only add to it).
+    return field - 2.0 * error >= settings_.threshold * (1.0 + 1e-12);
 }
 
 std::optional<double> Blob::probe_inside(const BlobScratch& s, double ta, double tb) const {

@@ -67,6 +67,15 @@ struct BlobScratch {
     const void* hit_blob = nullptr;
     Vec3d hit_point{};
     std::vector<std::uint32_t> hit_components;
+    /// Where a shadow ray last found the blob's inside, and the round
+    /// components in reach there (blob_is_positive only): their field alone
+    /// is a lower bound on the blob's, so a neighbouring shadow ray that
+    /// passes near that point is often proven blocked by them alone —
+    /// POV-Ray's shadow cache, within one blob.
+    const void* blocker_blob = nullptr;
+    Vec3d blocker_point{};
+    std::vector<std::uint32_t> blocker_components;
+    std::uint64_t blocked_by_cache = 0;  // shadow rays it settled (for tests)
     /// The components a camera tile's rays can meet, nearest the eye first
     /// (Blob::tile_list), for the last few tiles and blobs.
     struct TileList {
@@ -189,6 +198,11 @@ private:
     void fill_tile_list(BlobScratch::TileList& list) const;
     /// A box about component i's reach (rounded outward).
     [[nodiscard]] Box3 reach_box(std::uint32_t i) const;
+    /// Whether the ray is proven blocked by the components of the last
+    /// shadow ray's inside point (BlobScratch::blocker_point) within `span`.
+    [[nodiscard]] bool blocked_as_before(const Ray& ray, Span span, const BlobScratch& s) const;
+    /// Keeps the inside point a shadow ray found at t and the components in reach there.
+    void remember_blocker(const Ray& ray, double t, BlobScratch& s) const;
     /// What a search looks for: the first hit, or any t on or in the solid.
     enum class Query { First, Any };
     /// The query's t in `span` (a part of the blob's clip), or nothing;
@@ -233,6 +247,9 @@ private:
     double scale_ = 1.0;   // the bounds' diagonal
     std::unique_ptr<Bvh> bvh_;
     BlobStats stats_;
+    /// Every component is positive and the exact kernel is solved: the
+    /// field of any few components is a lower bound on the blob's.
+    bool positive_ = false;
 };
 
 }  // namespace zeroset
