@@ -3,6 +3,7 @@
 #include "zeroset/accel/blob.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -29,7 +30,11 @@ bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
 
 }  // namespace
 
-Blob::Blob(BlobDescription description) : description_(std::move(description)) {
+namespace {
+std::atomic<std::uint64_t> next_blob_id{1};
+}  // namespace
+
+Blob::Blob(BlobDescription description) : description_(std::move(description)), id_(next_blob_id++) {
     const BlobModel& m = model();
     if (!(description_.tolerance > 0.0 && description_.tolerance < 1.0))
         throw std::invalid_argument("a blob's tolerance must lie strictly between 0 and 1");
@@ -59,8 +64,12 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)) {
         stats_.reach_radius = std::max(stats_.reach_radius, std::sqrt(reach));
     }
     bvh_ = std::make_unique<Bvh>(boxes, description_.threads);
-    positive_ = !description_.metaball_quadratics &&
+    // The shadow cache's proof: all strengths positive, a polynomial kernel
+    // (0 at its reach's end, and its rounding bounded by its coefficients).
+    const std::span<const double> kernel = blob_kernel_info(m.kernel()).polynomial;
+    positive_ = !kernel.empty() &&
                 std::all_of(m.components().begin(), m.components().end(), [](const BlobComponent& c) { return c.strength > 0.0; });
+    for (const double c : kernel) kernel_rounding_ += 8.0 * u4 * std::abs(c);
     scale_ = std::max(bounds_.diagonal(), 1e-300);
     const RootFinderSettings tolerances = settings_for_scale(scale_);
     if (description_.metaball_quadratics && m.kernel() != BlobKernel::Metaball)
@@ -100,17 +109,24 @@ const BlobScratch::TileList* Blob::tile_list(const Ray& ray, const CameraFrustum
     BlobScratch::TileList* list = nullptr;
     BlobScratch::TileList* oldest = &s.tile_lists[0];
     for (BlobScratch::TileList& l : s.tile_lists) {
-        if (l.blob == this && l.tile == tile) list = &l;
+        if (l.blob == id_ && l.tile == tile) list = &l;
         if (l.last_use < oldest->last_use) oldest = &l;
     }
     if (!list) {
+        // More tiles and blobs in turn than the cache holds (instances of a
+        // blob each see the tile in their own space): a list is made for at
+        // most one ray in 16, the others walk the BVH.
+        if (s.tile_list_fills >= 64 && 16 * s.tile_list_fills > s.tile_list_uses) return nullptr;
+        ++s.tile_list_fills;
         list = oldest;
-        list->blob = this;
+        list->blob = id_;
         list->tile = tile;
         fill_tile_list(*list);
     }
     list->last_use = s.tile_list_uses;
-    return list->usable && tile.holds(ray, list->basis) ? list : nullptr;
+    if (!list->usable || !tile.holds(ray, list->basis)) return nullptr;
+    ++s.tile_list_rays;
+    return list;
 }
 
 void Blob::fill_tile_list(BlobScratch::TileList& list) const {
@@ -251,18 +267,25 @@ void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add) const {
 
 std::optional<Span> Blob::tube_on_ray(const MappedRay& across, double reach) {
     constexpr double infinity = std::numeric_limits<double>::infinity();
+    const Span undecided{-infinity, infinity};
     const double a2 = dot(across.qd, across.qd);
-    if (!(a2 > 0.0)) return Span{-infinity, infinity};  // along the axis (or NaN): not decided here
+    if (!(a2 > 0.0)) return undecided;  // along the axis (or NaN)
     const double nearest = -dot(across.q0, across.qd) / a2;
     const Vec3d closest = across.q0 + nearest * across.qd;
-    // The radius, wider by the coordinates' errors (twice over) and their
-    // rounding here, and 10⁻⁹ of itself: the parts' own tests round far less.
-    const double error = across.q0_error + std::abs(nearest) * across.qd_error +
-                         4.0 * u4 * (max_abs(across.q0) + std::abs(nearest) * max_abs(across.qd));
-    const double radius = std::sqrt(reach) * (1.0 + 1e-9) + 2.0 * error;
+    // The radius, wider by the coordinates' errors (twice over) at any t the
+    // span can reach — within twice the plain radius's half-width of the
+    // nearest approach — with their rounding here, and 10⁻⁹ of itself: the
+    // parts' own tests round far less.
+    const double plain = std::sqrt(reach) * (1.0 + 1e-9);
+    const double reach_t = std::abs(nearest) + 2.0 * plain / std::sqrt(a2);
+    const double error = across.q0_error + reach_t * across.qd_error +
+                         4.0 * u4 * (max_abs(across.q0) + reach_t * max_abs(across.qd));
+    if (!(error <= 0.5 * plain)) return undecided;  // the widening would pass the t it was worked out for
+    const double radius = plain + 2.0 * error;
     const double u_min = dot(closest, closest);
-    if (!(u_min <= radius * radius)) return u_min > radius * radius ? std::nullopt : std::optional<Span>(Span{-infinity, infinity});
+    if (u_min > radius * radius) return std::nullopt;
     const double half = std::sqrt((radius * radius - u_min) / a2) * (1.0 + 1e-9) + 1e-9 * std::abs(nearest);
+    if (!(half >= 0.0) || !std::isfinite(nearest)) return undecided;  // NaN, or overflow
     return Span{nearest - half, nearest + half};
 }
 
@@ -390,21 +413,21 @@ bool Blob::occluded(const Ray& ray, double t_min, double t_max, TraceScratch& sc
 }
 
 void Blob::remember_blocker(const Ray& ray, double t, BlobScratch& s) const {
-    s.blocker_blob = nullptr;
+    s.blocker_blob = 0;
     if (!positive_) return;
     s.blocker_components.clear();
+    if (s.active.empty() || s.active.size() > 8) return;
     for (const std::uint32_t k : s.active) {
         const std::uint32_t i = s.kernels[k].component;
         if (!components_[i].sphere) return;  // only round ones: their bound below is simple
         s.blocker_components.push_back(i);
     }
-    if (s.blocker_components.empty() || s.blocker_components.size() > 8) return;
-    s.blocker_blob = this;
+    s.blocker_blob = id_;
     s.blocker_point = ray.at(t);
 }
 
 bool Blob::blocked_as_before(const Ray& ray, Span span, const BlobScratch& s) const {
-    if (s.blocker_blob != this) return false;
+    if (s.blocker_blob != id_) return false;
     // The ray's point nearest the last inside point, within the span.
     const double t = std::clamp(dot(s.blocker_point - ray.origin, ray.dir) / dot(ray.dir, ray.dir), span.t0, span.t1);
     if (!(t >= span.t0 && t <= span.t1)) return false;  // NaN
@@ -419,10 +442,12 @@ bool Blob::blocked_as_before(const Ray& ray, Span span, const BlobScratch& s) co
         if (!(u <= c.reach)) continue;
         const KernelValue k = kernel_at(settings_.kernel, u, c.blobbiness);
         field += c.strength * k.value;
-        // What p's offset and q's rounding (|q| off by (off + |p| + |c|)·u4/R) do to u, and so to K, to first order
-        // and with room to spare; then the kernel's own rounding.
+        // What p's offset and q's rounding (each coordinate off by (off + |p|
+        // + |c|)·u4/R) and the dot product's do to u, and so to K, to first
+        // order with room to spare; then Horner's absolute rounding of K.
         const double q_off = (off + 2.0 * u4 * (max_abs(p) + c.center_largest)) * c.inverse_radius;
-        error += c.strength * (std::abs(k.slope) * 4.0 * (std::sqrt(u) + q_off) * q_off + u4 * 4.0 * std::abs(k.value));
+        const double u_off = 4.0 * (std::sqrt(u) + q_off) * q_off + 4.0 * u4 * u;
+        error += c.strength * (std::abs(k.slope) * u_off + kernel_rounding_);
     }
     // Inside when the field provably reaches T there (the others only add to it).
     return field - 2.0 * error >= settings_.threshold * (1.0 + 1e-12);

@@ -68,18 +68,20 @@ struct BlobScratch {
     Vec3d hit_point{};
     std::vector<std::uint32_t> hit_components;
     /// Where a shadow ray last found the blob's inside, and the round
-    /// components in reach there (blob_is_positive only): their field alone
-    /// is a lower bound on the blob's, so a neighbouring shadow ray that
-    /// passes near that point is often proven blocked by them alone —
-    /// POV-Ray's shadow cache, within one blob.
-    const void* blocker_blob = nullptr;
+    /// components in reach there (for a blob whose components are all
+    /// positive, Blob::positive_): their field alone is a lower bound on the
+    /// blob's, so a neighbouring shadow ray that passes near that point is
+    /// often proven blocked by them alone — POV-Ray's shadow cache, within
+    /// one blob. Blobs are told apart by their serial number (Blob::id_),
+    /// never reused.
+    std::uint64_t blocker_blob = 0;
     Vec3d blocker_point{};
     std::vector<std::uint32_t> blocker_components;
     std::uint64_t blocked_by_cache = 0;  // shadow rays it settled (for tests)
     /// The components a camera tile's rays can meet, nearest the eye first
     /// (Blob::tile_list), for the last few tiles and blobs.
     struct TileList {
-        const void* blob = nullptr;
+        std::uint64_t blob = 0;  // Blob::id_
         CameraFrustum tile;
         CameraFrustum::DualBasis basis;
         struct Entry {
@@ -91,7 +93,9 @@ struct BlobScratch {
         std::uint64_t last_use = 0;
     };
     std::array<TileList, 4> tile_lists;
-    std::uint64_t tile_list_uses = 0;
+    std::uint64_t tile_list_uses = 0;   // camera rays that asked
+    std::uint64_t tile_list_fills = 0;  // lists made
+    std::uint64_t tile_list_rays = 0;   // camera rays a list served
 };
 
 /// What the render summary says about a blob.
@@ -247,9 +251,13 @@ private:
     double scale_ = 1.0;   // the bounds' diagonal
     std::unique_ptr<Bvh> bvh_;
     BlobStats stats_;
-    /// Every component is positive and the exact kernel is solved: the
-    /// field of any few components is a lower bound on the blob's.
+    /// Every component is positive and the kernel a polynomial: the field
+    /// of any few components is a lower bound on the blob's, and
+    /// kernel_rounding_ bounds the rounding of one K (shadow cache).
     bool positive_ = false;
+    double kernel_rounding_ = 0.0;
+    /// A serial number, never reused: what the per-thread caches are keyed on.
+    std::uint64_t id_;
 };
 
 }  // namespace zeroset

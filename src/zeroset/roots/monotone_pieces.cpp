@@ -66,6 +66,7 @@ double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialS
     const bool a_negative = lo.value < 0.0;
     double x = a < first_guess && first_guess < b ? first_guess : a + (b - a) * (lo.value / (lo.value - hi.value));
     double previous_step = b - a;
+    bool by_newton = false;  // whether x came from a Newton step (not a bisection or the first guess)
     for (int i = 0; i < max_bisections; ++i) {
         if (!(a < x && x < b)) x = 0.5 * a + 0.5 * b;
         if (!(a < x && x < b)) break;  // a and b are adjacent doubles
@@ -74,7 +75,8 @@ double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialS
         if (v.value == 0.0) return x;
         ((v.value < 0.0) == a_negative ? a : b) = x;
         const double step = v.value / v.derivative;
-        if (std::abs(step) <= tolerance && std::abs(step) <= 0.5 * std::abs(previous_step)) {
+        // Within the tolerance, shrinking, and x itself a Newton step's: converging.
+        if (by_newton && std::abs(step) <= tolerance && std::abs(step) <= 0.5 * std::abs(previous_step)) {
             const double last = x - step;
             return a <= last && last <= b ? last : x;
         }
@@ -89,6 +91,7 @@ double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialS
         }
         const bool steady = std::abs(step) <= 0.5 * std::abs(previous_step);
         previous_step = step;
+        by_newton = steady;
         x = steady ? x - step : 0.5 * a + 0.5 * b;
     }
     return std::abs(horner(p, a).value) <= std::abs(horner(p, b).value) ? a : b;
