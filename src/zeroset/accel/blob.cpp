@@ -19,19 +19,15 @@ constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units 
 // A blob of this many components or fewer (one BVH leaf) meets them all
 // without the tree's walk.
 constexpr std::size_t few_components = 4;
-// A camera tile that sees more components than this walks the BVH: a ray
-// that meets nothing walks its tile's whole list.
-constexpr std::size_t max_tile_list = 128;
 
 /// The events' heap order: the earliest on top, and at equal t entries first.
 bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
     return a.t > b.t || (a.t == b.t && a.kind > b.kind);
 }
 
-}  // namespace
-
-namespace {
+// Blob::id_'s source: the per-thread caches tell blobs apart by it.
 std::atomic<std::uint64_t> next_blob_id{1};
+
 }  // namespace
 
 Blob::Blob(BlobDescription description) : description_(std::move(description)), id_(next_blob_id++) {
@@ -94,66 +90,6 @@ BlobScratch& Blob::scratch_for(TraceScratch& scratch) const {
     std::unique_ptr<BlobScratch>& slot = scratch.blob();
     if (!slot) slot = std::make_unique<BlobScratch>();
     return *slot;
-}
-
-Box3 Blob::reach_box(std::uint32_t i) const {
-    const Component& c = components_[i];
-    if (!c.sphere) return model().reach_box(c.index, c.reach);
-    // The centre ± R·√reach, and a few units for the rounding of both.
-    const double half = c.reach_length * (1.0 + 1e-12) + u4 * (c.center_largest + c.reach_length);
-    return {c.center - Vec3d{half, half, half}, c.center + Vec3d{half, half, half}};
-}
-
-const BlobScratch::TileList* Blob::tile_list(const Ray& ray, const CameraFrustum& tile, BlobScratch& s) const {
-    ++s.tile_list_uses;
-    BlobScratch::TileList* list = nullptr;
-    BlobScratch::TileList* oldest = &s.tile_lists[0];
-    for (BlobScratch::TileList& l : s.tile_lists) {
-        if (l.blob == id_ && l.tile == tile) list = &l;
-        if (l.last_use < oldest->last_use) oldest = &l;
-    }
-    if (!list) {
-        // More tiles and blobs in turn than the cache holds (instances of a
-        // blob each see the tile in their own space): a list is made for at
-        // most one ray in 16, the others walk the BVH.
-        if (s.tile_list_fills >= 64 && 16 * s.tile_list_fills > s.tile_list_uses) return nullptr;
-        ++s.tile_list_fills;
-        list = oldest;
-        list->blob = id_;
-        list->tile = tile;
-        fill_tile_list(*list);
-    }
-    list->last_use = s.tile_list_uses;
-    if (!list->usable || !tile.holds(ray, list->basis)) return nullptr;
-    ++s.tile_list_rays;
-    return list;
-}
-
-void Blob::fill_tile_list(BlobScratch::TileList& list) const {
-    const CameraFrustum& tile = list.tile;
-    list.entries.clear();
-    const auto basis = tile.dual_basis();
-    list.usable = basis.has_value();
-    if (!list.usable) return;
-    list.basis = *basis;
-    bvh_->select([&](const Box3& box) { return !tile.misses(box, *basis); },
-                 [&](std::uint32_t i) {
-                     const Box3 box = reach_box(i);
-                     if (tile.misses(box, *basis)) return true;
-                     if (list.entries.size() == max_tile_list) {
-                         list.usable = false;
-                         return false;
-                     }
-                     // The distance from the eye to the box, a little short for its rounding.
-                     Vec3d out;
-                     for (int axis = 0; axis < 3; ++axis)
-                         out[axis] = std::max({box.lo[axis] - tile.origin[axis], 0.0, tile.origin[axis] - box.hi[axis]});
-                     list.entries.push_back({length(out) * (1.0 - 8.0 * u4), i});
-                     return true;
-                 });
-    if (list.usable)
-        std::sort(list.entries.begin(), list.entries.end(),
-                  [](const BlobScratch::TileList::Entry& a, const BlobScratch::TileList::Entry& b) { return a.nearest < b.nearest; });
 }
 
 std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay& q, Span part) const {
@@ -410,47 +346,6 @@ bool Blob::occluded(const Ray& ray, double t_min, double t_max, TraceScratch& sc
     const std::optional<double> inside = search(ray, *span, Query::Any, s, scratch);
     if (inside) remember_blocker(ray, *inside, s);
     return inside.has_value();
-}
-
-void Blob::remember_blocker(const Ray& ray, double t, BlobScratch& s) const {
-    s.blocker_blob = 0;
-    if (!positive_) return;
-    s.blocker_components.clear();
-    if (s.active.empty() || s.active.size() > 8) return;
-    for (const std::uint32_t k : s.active) {
-        const std::uint32_t i = s.kernels[k].component;
-        if (!components_[i].sphere) return;  // only round ones: their bound below is simple
-        s.blocker_components.push_back(i);
-    }
-    s.blocker_blob = id_;
-    s.blocker_point = ray.at(t);
-}
-
-bool Blob::blocked_as_before(const Ray& ray, Span span, const BlobScratch& s) const {
-    if (s.blocker_blob != id_) return false;
-    // The ray's point nearest the last inside point, within the span.
-    const double t = std::clamp(dot(s.blocker_point - ray.origin, ray.dir) / dot(ray.dir, ray.dir), span.t0, span.t1);
-    if (!(t >= span.t0 && t <= span.t1)) return false;  // NaN
-    const Vec3d p = ray.at(t);
-    // p is off the ray's true point by rounding: a few units of its size.
-    const double off = 4.0 * u4 * (max_abs(ray.origin) + std::abs(t) * max_abs(ray.dir));
-    double field = 0.0, error = 0.0;
-    for (const std::uint32_t i : s.blocker_components) {
-        const Component& c = components_[i];
-        const Vec3d q = (p - c.center) * c.inverse_radius;
-        const double u = dot(q, q);
-        if (!(u <= c.reach)) continue;
-        const KernelValue k = kernel_at(settings_.kernel, u, c.blobbiness);
-        field += c.strength * k.value;
-        // What p's offset and q's rounding (each coordinate off by (off + |p|
-        // + |c|)·u4/R) and the dot product's do to u, and so to K, to first
-        // order with room to spare; then Horner's absolute rounding of K.
-        const double q_off = (off + 2.0 * u4 * (max_abs(p) + c.center_largest)) * c.inverse_radius;
-        const double u_off = 4.0 * (std::sqrt(u) + q_off) * q_off + 4.0 * u4 * u;
-        error += c.strength * (std::abs(k.slope) * u_off + kernel_rounding_);
-    }
-    // Inside when the field provably reaches T there (the others only add to it).
-    return field - 2.0 * error >= settings_.threshold * (1.0 + 1e-12);
 }
 
 std::optional<double> Blob::probe_inside(const BlobScratch& s, double ta, double tb) const {
