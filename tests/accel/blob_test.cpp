@@ -300,7 +300,7 @@ TEST(Blob, ACameraTilesRaysMeetTheComponentsByItsList) {
                 }
         }
         EXPECT_GT(hits, 100);
-        EXPECT_EQ(scratch.blob()->tile_list_rays, 6u * 64u);  // every ray went down its tile's list
+        EXPECT_EQ(scratch.counters.blob_list_rays, 6u * 64u);  // every ray went down its tile's list
     }
 }
 

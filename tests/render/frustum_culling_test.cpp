@@ -4,6 +4,8 @@
 // bounds, and with several rays a pixel.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "zeroset/render/renderer.hpp"
@@ -62,6 +64,49 @@ TEST(FrustumCulling, ImagesAreTheSameWithAndWithoutIt) {
     EXPECT_EQ(differing, 0u);
     // The culling did work: the rays spent fewer point evaluations.
     EXPECT_LT(culled.stats.counters.point_evaluations, traced.stats.counters.point_evaluations);
+}
+
+// A blob's camera rays meet its components by their tile's list: the same
+// image as by its BVH, directly and through a turned instance, with two
+// rays a pixel — to rounding (the components come in another order, so a
+// segment's terms are summed in another).
+TEST(FrustumCulling, ABlobsImageIsTheSameByItsTilesLists) {
+    std::string components;
+    for (int i = 0; i < 120; ++i) {
+        const double a = 0.37 * i, r = 0.4 + 0.012 * i;
+        components += "  component { center (" + std::to_string(r * std::cos(a)) + ", " + std::to_string(0.02 * i - 1.2) +
+                      ", " + std::to_string(r * std::sin(a)) + ") radius " + std::to_string(0.35 + 0.1 * std::sin(1.7 * i)) + " }\n";
+    }
+    const std::string text = R"(
+image  { width 64  height 48  spp 2 }
+camera { from (0.4, 2.2, -6)  at (0, 0, 0)  fov 40 }
+light  { from (-4, 6, -5) }
+shape spiral {
+  blob { kernel povray  threshold 0.5
+)" + components + R"(  }
+}
+instance spiral { translate (-0.8, 0, 0) }
+instance spiral { rotate (20, 40, 0)  translate (1.0, 0.2, 0.5) }
+)";
+    const Scene scene = parse_scene(text, "spiral.zs", ".");
+    RenderSettings on;
+    on.width = scene.image.width;
+    on.height = scene.image.height;
+    on.samples_per_pixel = scene.image.samples_per_pixel;
+    on.threads = 2;
+    RenderSettings off = on;
+    off.frustum_culling = false;
+    const RenderResult listed = render(scene, on), walked = render(scene, off);
+    EXPECT_GT(listed.stats.counters.blob_list_rays, listed.stats.camera_rays / 4);  // the lists served
+    EXPECT_EQ(walked.stats.counters.blob_list_rays, 0u);
+    EXPECT_GT(listed.stats.hits, 1000u);
+    EXPECT_EQ(listed.stats.hits, walked.stats.hits);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < listed.image.pixels.size(); ++i) {
+        const Vec3f d = listed.image.pixels[i] - walked.image.pixels[i];
+        largest = std::max({largest, std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    }
+    EXPECT_LE(largest, 1e-4f);
 }
 
 }  // namespace

@@ -434,6 +434,7 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
         for (std::uint32_t i = 0; i < components_.size(); ++i) meet(i);
         advance(std::numeric_limits<double>::infinity());
     } else if (list) {
+        ++scratch.counters.blob_list_rays;
         // The ray leaves the eye: a component no nearer it than `nearest`
         // enters at t ≥ nearest/|dir|, and so does every one after it.
         const double per_length = (1.0 - 8.0 * u4) / length(ray.dir);

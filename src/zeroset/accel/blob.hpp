@@ -95,7 +95,6 @@ struct BlobScratch {
     std::array<TileList, 4> tile_lists;
     std::uint64_t tile_list_uses = 0;   // camera rays that asked
     std::uint64_t tile_list_fills = 0;  // lists made
-    std::uint64_t tile_list_rays = 0;   // camera rays a list served
 };
 
 /// What the render summary says about a blob.

@@ -47,9 +47,7 @@ const BlobScratch::TileList* Blob::tile_list(const Ray& ray, const CameraFrustum
         fill_tile_list(*list);
     }
     list->last_use = s.tile_list_uses;
-    if (!list->usable || !tile.holds(ray, list->basis)) return nullptr;
-    ++s.tile_list_rays;
-    return list;
+    return list->usable && tile.holds(ray, list->basis) ? list : nullptr;
 }
 
 void Blob::fill_tile_list(BlobScratch::TileList& list) const {

@@ -95,8 +95,9 @@ private:
     RenderSettings settings_;
     PreparedScene prepared_;
     CameraRays camera_;
-    // Whether camera tiles are culled: asked for, and some leaf is
-    // partitioned (only those cull; for the others a tile would only cost).
+    // Whether camera rays come with their tiles: asked for, and some leaf is
+    // partitioned (it culls them) or some object is a blob (it lists its
+    // components by them); for the others a tile would only cost.
     bool cull_camera_tiles_ = false;
     // The scene's bounds, where finite: a tile whose rays all pass them is
     // background without a ray traced.

@@ -64,6 +64,8 @@ public:
     /// components, exact degree-4 polynomials, guarded segments, BVH 450 nodes,
     /// 0.3 MB"; empty when there are none.
     [[nodiscard]] std::string blob_summary() const;
+    /// Whether any object is a blob traced by its own path (its camera rays want their tiles).
+    [[nodiscard]] bool has_blobs() const { return !blobs_.empty(); }
     /// What the scene may not have meant, e.g. "scene.zs:12:1: object 'ball':
     /// its bounds cut through its solid …" (trace/bounds_cut.hpp).
     [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }

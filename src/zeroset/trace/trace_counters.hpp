@@ -15,6 +15,7 @@ struct TraceCounters {
     std::uint64_t failed_queries = 0;        // ray queries a method gave up on (a budget spent), answered "no hit"
     std::uint64_t cell_visits = 0;           // octree cells a method ran in (accel/octree.hpp)
     std::uint64_t blob_kernels = 0;          // blob components a ray came within reach of (accel/blob.hpp)
+    std::uint64_t blob_list_rays = 0;        // camera rays that met a blob's components by their tile's list
     /// Not a count: once evaluations() passes it, the subdividing methods
     /// give up (Failed) at their next segment. The renderer sets its budget
     /// here, so that one query cannot run far past it.
@@ -33,6 +34,7 @@ struct TraceCounters {
         failed_queries += o.failed_queries;
         cell_visits += o.cell_visits;
         blob_kernels += o.blob_kernels;
+        blob_list_rays += o.blob_list_rays;
         return *this;
     }
 
@@ -47,6 +49,7 @@ struct TraceCounters {
         d.failed_queries = failed_queries - before.failed_queries;
         d.cell_visits = cell_visits - before.cell_visits;
         d.blob_kernels = blob_kernels - before.blob_kernels;
+        d.blob_list_rays = blob_list_rays - before.blob_list_rays;
         return d;
     }
 };
