@@ -338,8 +338,8 @@ TEST(Blob, AShadowRayIsFirstTriedAgainstTheLastBlockersComponents) {
                 ++rays;
             }
         EXPECT_GT(blocked, rays / 5);
-        if (negative) EXPECT_EQ(shared.blob()->blocked_by_cache, 0u);
-        else EXPECT_GT(shared.blob()->blocked_by_cache, static_cast<std::uint64_t>(blocked / 3));
+        if (negative) EXPECT_EQ(shared.counters.blob_cached_shadows, 0u);
+        else EXPECT_GT(shared.counters.blob_cached_shadows, static_cast<std::uint64_t>(blocked / 3));
     }
 }
 

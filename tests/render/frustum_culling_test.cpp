@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "zeroset/render/renderer.hpp"
 #include "zeroset/scene/load_scene.hpp"
@@ -45,8 +46,8 @@ object "cut" {
 )";
 }
 
-TEST(FrustumCulling, ImagesAreTheSameWithAndWithoutIt) {
-    const Scene scene = parse_scene(scene_text(), "beads.zs", ".");
+/// The scene at its own size and samples, on two threads: with frustum culling, then without.
+std::pair<RenderResult, RenderResult> render_with_and_without_culling(const Scene& scene) {
     RenderSettings on;
     on.width = scene.image.width;
     on.height = scene.image.height;
@@ -54,7 +55,12 @@ TEST(FrustumCulling, ImagesAreTheSameWithAndWithoutIt) {
     on.threads = 2;
     RenderSettings off = on;
     off.frustum_culling = false;
-    const RenderResult culled = render(scene, on), traced = render(scene, off);
+    return {render(scene, on), render(scene, off)};
+}
+
+TEST(FrustumCulling, ImagesAreTheSameWithAndWithoutIt) {
+    const Scene scene = parse_scene(scene_text(), "beads.zs", ".");
+    const auto [culled, traced] = render_with_and_without_culling(scene);
     ASSERT_EQ(culled.stats.partitions.empty(), false);  // the objects are partitioned: culling applies
     EXPECT_GT(culled.stats.hits, 1000u);                 // and much of the frame is surface
     EXPECT_EQ(culled.stats.hits, traced.stats.hits);
@@ -89,14 +95,7 @@ instance spiral { translate (-0.8, 0, 0) }
 instance spiral { rotate (20, 40, 0)  translate (1.0, 0.2, 0.5) }
 )";
     const Scene scene = parse_scene(text, "spiral.zs", ".");
-    RenderSettings on;
-    on.width = scene.image.width;
-    on.height = scene.image.height;
-    on.samples_per_pixel = scene.image.samples_per_pixel;
-    on.threads = 2;
-    RenderSettings off = on;
-    off.frustum_culling = false;
-    const RenderResult listed = render(scene, on), walked = render(scene, off);
+    const auto [listed, walked] = render_with_and_without_culling(scene);
     EXPECT_GT(listed.stats.counters.blob_list_rays, listed.stats.camera_rays / 4);  // the lists served
     EXPECT_EQ(walked.stats.counters.blob_list_rays, 0u);
     EXPECT_GT(listed.stats.hits, 1000u);

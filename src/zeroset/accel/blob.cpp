@@ -340,7 +340,7 @@ bool Blob::occluded(const Ray& ray, double t_min, double t_max, TraceScratch& sc
     if (!span) return false;
     BlobScratch& s = scratch_for(scratch);
     if (blocked_as_before(ray, *span, s)) {
-        ++s.blocked_by_cache;
+        ++scratch.counters.blob_cached_shadows;
         return true;
     }
     const std::optional<double> inside = search(ray, *span, Query::Any, s, scratch);
@@ -428,9 +428,9 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
                 std::push_heap(s.events.begin(), s.events.begin() + static_cast<std::ptrdiff_t>(j) + 1, later);
         });
     };
-    const BlobScratch::TileList* list =
-        components_.size() > few_components && scratch.camera_frustum ? tile_list(ray, *scratch.camera_frustum, s) : nullptr;
-    if (components_.size() <= few_components) {
+    const bool few = components_.size() <= few_components;
+    const BlobScratch::TileList* list = !few && scratch.camera_frustum ? tile_list(ray, *scratch.camera_frustum, s) : nullptr;
+    if (few) {
         for (std::uint32_t i = 0; i < components_.size(); ++i) meet(i);
         advance(std::numeric_limits<double>::infinity());
     } else if (list) {

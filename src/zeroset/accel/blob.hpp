@@ -77,7 +77,6 @@ struct BlobScratch {
     std::uint64_t blocker_blob = 0;
     Vec3d blocker_point{};
     std::vector<std::uint32_t> blocker_components;
-    std::uint64_t blocked_by_cache = 0;  // shadow rays it settled (for tests)
     /// The components a camera tile's rays can meet, nearest the eye first
     /// (Blob::tile_list), for the last few tiles and blobs.
     struct TileList {

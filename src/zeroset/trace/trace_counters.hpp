@@ -16,6 +16,7 @@ struct TraceCounters {
     std::uint64_t cell_visits = 0;           // octree cells a method ran in (accel/octree.hpp)
     std::uint64_t blob_kernels = 0;          // blob components a ray came within reach of (accel/blob.hpp)
     std::uint64_t blob_list_rays = 0;        // camera rays that met a blob's components by their tile's list
+    std::uint64_t blob_cached_shadows = 0;   // shadow rays a blob's last blocker settled
     /// Not a count: once evaluations() passes it, the subdividing methods
     /// give up (Failed) at their next segment. The renderer sets its budget
     /// here, so that one query cannot run far past it.
@@ -35,6 +36,7 @@ struct TraceCounters {
         cell_visits += o.cell_visits;
         blob_kernels += o.blob_kernels;
         blob_list_rays += o.blob_list_rays;
+        blob_cached_shadows += o.blob_cached_shadows;
         return *this;
     }
 
@@ -50,6 +52,7 @@ struct TraceCounters {
         d.cell_visits = cell_visits - before.cell_visits;
         d.blob_kernels = blob_kernels - before.blob_kernels;
         d.blob_list_rays = blob_list_rays - before.blob_list_rays;
+        d.blob_cached_shadows = blob_cached_shadows - before.blob_cached_shadows;
         return d;
     }
 };
