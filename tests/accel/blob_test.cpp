@@ -5,6 +5,8 @@
 // formulas and enclosures, spans, normals, and the cost per ray.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -396,6 +398,54 @@ TEST(Blob, ARayInACylindersEndPlaneCountsItOnce) {
     const double s = std::sqrt(0.5);
     EXPECT_FALSE(blob.first_hit({{0.6, 0, 0}, {s, 0, s}}, 0.0, 1e9, scratch));
     EXPECT_FALSE(blob.first_hit({{0.6, 0, 1}, {s, 0, -s}}, 0.0, 1e9, scratch));
+}
+
+// The tube about a cylinder's axis (Blob::tube_on_ray, which lets a ray skip
+// the round ends it cannot meet) holds every t at which any ray within the
+// stated rounding of the mapped one comes within reach of the axis line —
+// however far along the axis the ray passes (its errors grow with that) and
+// however nearly it runs along the axis (then its piece in the tube is long,
+// and the errors at the piece's ends are what count).
+TEST(Blob, TheTubeHoldsEveryRayWithinTheMappingsRounding) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    const auto random_vector = [&](double size) { return Vec3d{unit(rng), unit(rng), unit(rng)} * size; };
+    const auto largest = [](const Vec3d& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
+    const auto sign = [&] { return fraction(rng) < 0.5 ? -1.0L : 1.0L; };
+    constexpr double u = std::numeric_limits<double>::epsilon();
+    int pieces = 0;  // rays in reach of the axis, checked against a decided tube
+    for (int n = 0; n < 20000; ++n) {
+        const double reach = 0.2 + 4.0 * fraction(rng);
+        const Vec3d qd = random_vector(std::pow(10.0, -4.0 + 6.0 * fraction(rng)));
+        // The nearest approach within a few radii of the axis, at t up to 10⁸.
+        const Vec3d q0 = random_vector(2.0) - qd * (std::pow(10.0, 8.0 * fraction(rng)) * unit(rng));
+        // The errors as the mapping makes them: in units of the ray's and the
+        // axis's sizes, which may far exceed q's own (a ray nearly along the
+        // axis, or passing far from the cylinder's centre).
+        const Blob::MappedRay across{q0, qd, std::pow(10.0, 14.0 * fraction(rng)) * u * std::max(largest(q0), 1.0),
+                                     std::pow(10.0, 14.0 * fraction(rng)) * u * largest(qd)};
+        const std::optional<Span> tube = Blob::tube_on_ray(across, reach);
+        const bool decided = !tube || std::isfinite(tube->t0);
+        for (int trial = 0; trial < 16 && decided; ++trial) {
+            // A ray at a corner of the rounding's box, in long double.
+            std::array<long double, 3> p{}, d{};
+            for (int k = 0; k < 3; ++k) {
+                p[k] = static_cast<long double>(q0[k]) + sign() * across.q0_error;
+                d[k] = static_cast<long double>(qd[k]) + sign() * across.qd_error;
+            }
+            const long double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            const long double nearest = -(p[0] * d[0] + p[1] * d[1] + p[2] * d[2]) / dd;
+            long double closest = 0.0L;
+            for (int k = 0; k < 3; ++k) closest += (p[k] + nearest * d[k]) * (p[k] + nearest * d[k]);
+            if (closest > reach) continue;  // this ray never comes within reach
+            const long double half = std::sqrt((reach - closest) / dd);
+            ASSERT_TRUE(tube) << n << ": the ray comes within reach of the axis at t = " << static_cast<double>(nearest);
+            EXPECT_LE(tube->t0, nearest - half) << n;
+            EXPECT_GE(tube->t1, nearest + half) << n;
+            ++pieces;
+        }
+    }
+    EXPECT_GT(pieces, 50000);  // most cases are decided and in reach, not waved through
 }
 
 TEST(Blob, MetaballQuadraticsApproximateTheExactKernel) {

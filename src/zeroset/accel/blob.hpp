@@ -128,6 +128,19 @@ public:
     [[nodiscard]] double value_at(const Vec3d& p) const;
     [[nodiscard]] Vec3d gradient_at(const Vec3d& p) const;
 
+    // Public for their tests: the pieces of a component's mapping that a
+    // wrong rounding bound would break without any image showing it.
+    /// The ray in a kernel's space, q(t) = q0 + t·qd, with bounds on the
+    /// rounding of each coordinate.
+    struct MappedRay {
+        Vec3d q0, qd;
+        double q0_error, qd_error;
+    };
+    /// Where the ray, mapped about a cylinder's axis line, is within its
+    /// reach of the line, widened past any rounding (the whole ray when
+    /// that is not decided); nothing when it never is.
+    [[nodiscard]] static std::optional<Span> tube_on_ray(const MappedRay& across, double reach);
+
 private:
     /// One component, prepared.
     struct Component {
@@ -171,20 +184,10 @@ private:
     /// rounding of the exact test: a cheap rejection in the blob's own space
     /// before a component is mapped into its kernel's.
     [[nodiscard]] static bool passes_beside(const RaySizes& ray, const Vec3d& point, double point_largest, double radius);
-    /// The ray in a kernel's space, q(t) = q0 + t·qd, with bounds on the
-    /// rounding of each coordinate.
-    struct MappedRay {
-        Vec3d q0, qd;
-        double q0_error, qd_error;
-    };
     /// The ray about a point (a component's centre or end, whose largest
     /// |coordinate| is given): q = (p − point)/R.
     [[nodiscard]] static MappedRay about_point(const RaySizes& ray, const Component& c, const Vec3d& point,
                                                double point_largest);
-    /// Where the ray, mapped about a cylinder's axis line, is within its
-    /// reach of the line, widened past any rounding (the whole ray when
-    /// that is not decided); nothing when it never is.
-    [[nodiscard]] static std::optional<Span> tube_on_ray(const MappedRay& across, double reach);
     /// The component's kernel along the mapped ray, within reach and the span `part`.
     [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part) const;
 
