@@ -438,10 +438,13 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
         // The ray leaves the eye: a component no nearer it than `nearest`
         // enters at t ≥ nearest/|dir|, and so does every one after it.
         const double per_length = (1.0 - 8.0 * u4) / length(ray.dir);
+        const double dir_square = dot(ray.dir, ray.dir);
         bool going = true;
         for (const BlobScratch::TileList::Entry& e : list->entries) {
             const double enters = e.nearest * per_length;
             if (enters > span.t1) break;
+            const double along = dot(e.from_center, ray.dir);
+            if (along * along < e.beside * dir_square) continue;  // passes beside its reach
             if (!s.events.empty() && s.events.front().t < enters && !(going = advance(enters))) break;
             meet(e.component);
         }

@@ -86,12 +86,20 @@ struct BlobScratch {
         struct Entry {
             double nearest;  // no point of the component's reach is nearer the eye
             std::uint32_t component;
+            // A round component's centre as seen from the eye, e = eye − centre,
+            // and the test that a ray of the tile passes beside its reach with
+            // room for all rounding: (e·d)² < beside·|d|² (never, for other
+            // components, whose `beside` is negative) — Blob::passes_beside
+            // without its per-ray sizes.
+            Vec3d from_center;
+            double beside;
         };
         std::vector<Entry> entries;
         bool usable = false;  // false: too long to walk; the BVH serves the tile's rays
         std::uint64_t last_use = 0;
     };
     std::array<TileList, 4> tile_lists;
+    std::size_t last_tile_list = 0;     // the one the last camera ray used, tried first
     std::uint64_t tile_list_uses = 0;   // camera rays that asked
     std::uint64_t tile_list_fills = 0;  // lists made
 };
@@ -201,6 +209,8 @@ private:
     /// The list of its tile's components: those whose reach box the tile's
     /// rays may meet, by their boxes' distance from the eye.
     void fill_tile_list(BlobScratch::TileList& list) const;
+    /// A list entry's `beside` for round component c, e = eye − centre.
+    [[nodiscard]] static double beside_bound(const Vec3d& eye, const Component& c, const Vec3d& from_center);
     /// A box about component i's reach (rounded outward).
     [[nodiscard]] Box3 reach_box(std::uint32_t i) const;
     /// Whether the ray is proven blocked by the components of the last

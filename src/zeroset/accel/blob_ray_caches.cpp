@@ -27,13 +27,26 @@ Box3 Blob::reach_box(std::uint32_t i) const {
     return {c.center - Vec3d{half, half, half}, c.center + Vec3d{half, half, half}};
 }
 
+double Blob::beside_bound(const Vec3d& eye, const Component& c, const Vec3d& from_center) {
+    // passes_beside's keep for any ray from the eye: its term |nearest|·
+    // max|d_i| is at most |e|·|d|/|d|²·|d| = |e|.
+    const double e2 = dot(from_center, from_center);
+    const double keep =
+        c.reach_length + 1e-9 * (c.reach_length + max_abs(eye) + c.center_largest + std::sqrt(e2));
+    // The ray's squared distance from the centre is |e|² − (e·d)²/|d|². The
+    // rounding of (e·d)², of beside·|d|² and of beside itself is within 20
+    // units of (|e|² + keep²)·|d|²; with 64 units off beside, a ray the test
+    // puts beside is farther than keep from the centre.
+    return e2 - keep * keep - 16.0 * u4 * (e2 + keep * keep);
+}
+
 const BlobScratch::TileList* Blob::tile_list(const Ray& ray, const CameraFrustum& tile, BlobScratch& s) const {
     ++s.tile_list_uses;
-    BlobScratch::TileList* list = nullptr;
-    BlobScratch::TileList* oldest = &s.tile_lists[0];
-    for (BlobScratch::TileList& l : s.tile_lists) {
-        if (l.blob == id_ && l.tile == tile) list = &l;
-        if (l.last_use < oldest->last_use) oldest = &l;
+    BlobScratch::TileList* list = &s.tile_lists[s.last_tile_list];  // a tile's rays come in a row
+    if (list->blob != id_ || !(list->tile == tile)) {
+        list = nullptr;
+        for (BlobScratch::TileList& l : s.tile_lists)
+            if (l.blob == id_ && l.tile == tile) list = &l;
     }
     if (!list) {
         // More tiles and blobs in turn than the cache holds (instances of a
@@ -41,12 +54,14 @@ const BlobScratch::TileList* Blob::tile_list(const Ray& ray, const CameraFrustum
         // most one ray in 16, the others walk the BVH.
         if (s.tile_list_fills >= 64 && 16 * s.tile_list_fills > s.tile_list_uses) return nullptr;
         ++s.tile_list_fills;
-        list = oldest;
+        list = &*std::min_element(s.tile_lists.begin(), s.tile_lists.end(),
+                                  [](const auto& a, const auto& b) { return a.last_use < b.last_use; });
         list->blob = id_;
         list->tile = tile;
         fill_tile_list(*list);
     }
     list->last_use = s.tile_list_uses;
+    s.last_tile_list = static_cast<std::size_t>(list - s.tile_lists.data());
     return list->usable && tile.holds(ray, list->basis) ? list : nullptr;
 }
 
@@ -69,7 +84,10 @@ void Blob::fill_tile_list(BlobScratch::TileList& list) const {
                      Vec3d out;
                      for (int axis = 0; axis < 3; ++axis)
                          out[axis] = std::max({box.lo[axis] - tile.origin[axis], 0.0, tile.origin[axis] - box.hi[axis]});
-                     list.entries.push_back({length(out) * (1.0 - 8.0 * u4), i});
+                     const Component& c = components_[i];
+                     const Vec3d from_center = tile.origin - c.center;
+                     list.entries.push_back({length(out) * (1.0 - 8.0 * u4), i, from_center,
+                                             c.sphere ? beside_bound(tile.origin, c, from_center) : -1.0});
                      return true;
                  });
     if (list.usable)
