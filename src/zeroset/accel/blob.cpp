@@ -138,13 +138,13 @@ Blob::MappedRay Blob::about_point(const RaySizes& sizes, const Component& c, con
 }
 
 template <class Add>
-void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add) const {
+void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add, bool beside_checked) const {
     const Ray& ray = sizes.ray;
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const Component& c = components_[i];
     const Span everywhere{-infinity, infinity};
     if (c.sphere) {
-        if (passes_beside(sizes, c.center, c.center_largest, c.reach_length)) return;
+        if (!beside_checked && passes_beside(sizes, c.center, c.center_largest, c.reach_length)) return;
         if (const auto k = part_on_ray(c, about_point(sizes, c, c.center, c.center_largest), everywhere)) add(*k);
         return;
     }
@@ -419,14 +419,17 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
         return true;
     };
     const RaySizes sizes(ray);
-    const auto meet = [&](std::uint32_t i) {
-        on_ray(sizes, i, [&](const KernelOnRay& k) {
-            if (!(k.t_out >= span.t0 && k.t_in <= span.t1)) return;
-            const std::size_t before = s.events.size();
-            add_events(k, span.t0, span.t1, s);
-            for (std::size_t j = before; j < s.events.size(); ++j)
-                std::push_heap(s.events.begin(), s.events.begin() + static_cast<std::ptrdiff_t>(j) + 1, later);
-        });
+    const auto meet = [&](std::uint32_t i, bool beside_checked = false) {
+        on_ray(
+            sizes, i,
+            [&](const KernelOnRay& k) {
+                if (!(k.t_out >= span.t0 && k.t_in <= span.t1)) return;
+                const std::size_t before = s.events.size();
+                add_events(k, span.t0, span.t1, s);
+                for (std::size_t j = before; j < s.events.size(); ++j)
+                    std::push_heap(s.events.begin(), s.events.begin() + static_cast<std::ptrdiff_t>(j) + 1, later);
+            },
+            beside_checked);
     };
     const bool few = components_.size() <= few_components;
     const BlobScratch::TileList* list = !few && scratch.camera_frustum ? tile_list(ray, *scratch.camera_frustum, s) : nullptr;
@@ -446,7 +449,7 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
             const double along = dot(e.from_center, ray.dir);
             if (along * along < e.beside * dir_square) continue;  // passes beside its reach
             if (!s.events.empty() && s.events.front().t < enters && !(going = advance(enters))) break;
-            meet(e.component);
+            meet(e.component, true);
         }
         if (going) advance(std::numeric_limits<double>::infinity());
     } else {

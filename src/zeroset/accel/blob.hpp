@@ -185,8 +185,10 @@ private:
     /// its parts the ray meets (an end, the body, the other end — the
     /// kernel of the distance to the segment is, piece by piece along the
     /// ray, the kernel of a distance to a point or to the axis line).
+    /// (`beside_checked`: the caller has already found that the ray does not
+    /// pass a round component beside its reach.)
     template <class Add>
-    void on_ray(const RaySizes& ray, std::uint32_t i, Add&& add) const;
+    void on_ray(const RaySizes& ray, std::uint32_t i, Add&& add, bool beside_checked = false) const;
     /// Whether the ray passes farther than `radius` from `point` (whose
     /// largest |coordinate| is given) by a margin far wider than the
     /// rounding of the exact test: a cheap rejection in the blob's own space
