@@ -99,6 +99,8 @@ TEST(CameraFrustum, BoxesBehindBesideAndAroundTheEye) {
     const Vec3d beside = ahead + f.right * 5.0;
     EXPECT_TRUE(f.misses({beside - unit, beside + unit}));                         // far to the right
     EXPECT_FALSE(f.misses({f.origin - unit, f.origin + unit}));                    // around the eye
+    const Vec3d beside_eye = f.origin + f.right * 5.0;
+    EXPECT_TRUE(f.misses({beside_eye - unit, beside_eye + unit}));                 // beside the eye, partly behind it
     constexpr double inf = INFINITY;
     EXPECT_FALSE(f.misses({{-inf, -inf, -inf}, {inf, inf, inf}}));                 // everything
     EXPECT_FALSE(f.misses({{NAN, 0, 0}, {1, 1, 1}}));                              // not a box: never culled

@@ -72,10 +72,11 @@ void Blob::fill_tile_list(BlobScratch::TileList& list) const {
     list.usable = basis.has_value();
     if (!list.usable) return;
     list.basis = *basis;
-    bvh_->select([&](const Box3& box) { return !tile.misses(box, *basis); },
+    const CameraFrustum::Planes planes = tile.planes(*basis);
+    bvh_->select([&](const Box3& box) { return !tile.misses(box, planes); },
                  [&](std::uint32_t i) {
                      const Box3 box = reach_box(i);
-                     if (tile.misses(box, *basis)) return true;
+                     if (tile.misses(box, planes)) return true;
                      if (list.entries.size() == max_tile_list) {
                          list.usable = false;
                          return false;

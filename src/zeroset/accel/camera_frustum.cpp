@@ -1,5 +1,5 @@
-// A tile's rays against a box, by projecting the box's corners onto the
-// image plane.
+// A tile's rays against a box, by the frustum's planes: a box wholly
+// outside one of them meets no ray of the tile.
 #include "zeroset/accel/camera_frustum.hpp"
 
 #include <algorithm>
@@ -19,40 +19,37 @@ CameraFrustum::Rectangle CameraFrustum::rectangle() const {
             std::max(v0, v0 + rows * dv)};
 }
 
-double CameraFrustum::Rectangle::margin(double largest) const {
-    // A few units of the largest coordinate; 1e-9 of it is far more.
-    return 1e-9 * (1.0 + std::max({largest, std::abs(u_lo), std::abs(u_hi), std::abs(v_lo), std::abs(v_hi)}));
+double CameraFrustum::Rectangle::margin() const {
+    // A few units of the rectangle's coordinates; 1e-9 of them is far more.
+    return 1e-9 * (1.0 + std::max({std::abs(u_lo), std::abs(u_hi), std::abs(v_lo), std::abs(v_hi)}));
+}
+
+CameraFrustum::Planes CameraFrustum::planes(const DualBasis& basis) const {
+    const Rectangle tile = rectangle();
+    const double m = tile.margin();  // holds() lets a ray stray by half of it
+    const Vec3d &s = basis.to_s, &su = basis.to_su, &sv = basis.to_sv;
+    return {{su - s * (tile.u_lo - m), s * (tile.u_hi + m) - su, sv - s * (tile.v_lo - m), s * (tile.v_hi + m) - sv, s}};
 }
 
 bool CameraFrustum::misses(const Box3& box) const {
     const auto basis = dual_basis();
-    return basis && misses(box, *basis);
+    return basis && misses(box, planes(*basis));
 }
 
-bool CameraFrustum::misses(const Box3& box, const DualBasis& basis) const {
+bool CameraFrustum::misses(const Box3& box, const Planes& planes) const {
     if (!box.valid()) return false;  // NaN, or nothing: never culled
-    constexpr double infinity = std::numeric_limits<double>::infinity();
-    double u_lo = infinity, u_hi = -infinity, v_lo = infinity, v_hi = -infinity;
-    bool all_behind = true, all_in_front = true;
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3d p{(corner & 1) ? box.hi.x : box.lo.x, (corner & 2) ? box.hi.y : box.lo.y,
-                      (corner & 4) ? box.hi.z : box.lo.z};
-        const Vec3d w = p - origin;
-        const double s = dot(basis.to_s, w);
-        all_behind = all_behind && s < 0.0;
-        all_in_front = all_in_front && s > 0.0;
-        if (!all_in_front) continue;
-        const double u = dot(basis.to_su, w) / s, v = dot(basis.to_sv, w) / s;
-        u_lo = std::min(u_lo, u), u_hi = std::max(u_hi, u);
-        v_lo = std::min(v_lo, v), v_hi = std::max(v_hi, v);
+    for (const Vec3d& n : planes.forms) {
+        // The form's largest value over the box, and a bound far above its rounding.
+        double most = 0.0, size = 0.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double lo = n[axis] * (box.lo[axis] - origin[axis]), hi = n[axis] * (box.hi[axis] - origin[axis]);
+            most += std::max(lo, hi);
+            size += std::abs(n[axis]) * (std::abs(box.lo[axis]) + std::abs(box.hi[axis]) + 2.0 * std::abs(origin[axis]));
+        }
+        // Endless boxes give ∞ − ∞ or 0·∞: NaN compares false, never culled.
+        if (most < -1e-12 * size) return true;
     }
-    if (all_behind) return true;
-    if (!all_in_front) return false;  // the box reaches the eye's plane: its projection is unbounded
-    if (!(std::isfinite(u_lo) && std::isfinite(u_hi) && std::isfinite(v_lo) && std::isfinite(v_hi))) return false;
-    const Rectangle tile = rectangle();
-    const double margin = tile.margin(std::max({std::abs(u_lo), std::abs(u_hi), std::abs(v_lo), std::abs(v_hi)}));
-    return u_hi < tile.u_lo - margin || u_lo > tile.u_hi + margin || v_hi < tile.v_lo - margin ||
-           v_lo > tile.v_hi + margin;
+    return false;
 }
 
 bool CameraFrustum::holds(const Ray& ray, const DualBasis& basis) const {
@@ -63,7 +60,7 @@ bool CameraFrustum::holds(const Ray& ray, const DualBasis& basis) const {
     const Rectangle tile = rectangle();
     // Within half the least margin misses() allows: a box that meets the
     // ray projects over its (u, v), so misses() keeps it for the tile.
-    const double margin = 0.5 * tile.margin(0.0);
+    const double margin = 0.5 * tile.margin();
     return u >= tile.u_lo - margin && u <= tile.u_hi + margin && v >= tile.v_lo - margin && v <= tile.v_hi + margin;
 }
 

@@ -9,6 +9,7 @@
 // the tile's rays in its own coordinates.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "zeroset/math/box3.hpp"
@@ -51,12 +52,21 @@ struct CameraFrustum {
         Vec3d to_s, to_su, to_sv;
     };
     [[nodiscard]] std::optional<DualBasis> dual_basis() const;
-    /// True when no ray of the tile meets the box (at any t ≥ 0): it lies
-    /// behind the eye, or in front of it and projected wholly beside the
-    /// tile's rectangle of the image plane. False when that is not certain.
-    /// (With the tile's dual basis, when many boxes are asked.)
+    /// The tile's frustum as five linear forms on w = p − origin, each ≥ 0 at
+    /// every point of every ray of the tile: s·(u − u_lo), s·(u_hi − u),
+    /// s·(v − v_lo) and s·(v_hi − v) for its rectangle widened by the margin
+    /// holds() allows twice over, and s. (Four side planes through the eye
+    /// and the eye's plane: together, the tile's rays and nothing behind.)
+    struct Planes {
+        std::array<Vec3d, 5> forms;
+    };
+    [[nodiscard]] Planes planes(const DualBasis& basis) const;
+    /// True when no ray of the tile meets the box (at any t ≥ 0): the box
+    /// lies wholly on the outer side of one of the frustum's planes. False
+    /// when that is not certain. (With the tile's planes, when many boxes
+    /// are asked.)
     [[nodiscard]] bool misses(const Box3& box) const;
-    [[nodiscard]] bool misses(const Box3& box, const DualBasis& basis) const;
+    [[nodiscard]] bool misses(const Box3& box, const Planes& planes) const;
     /// True when the ray is one of the tile's: it leaves the origin,
     /// exactly, through the tile's rectangle of the image plane (within a
     /// margin far narrower than the one misses() allows), so it meets no box
@@ -64,11 +74,11 @@ struct CameraFrustum {
     [[nodiscard]] bool holds(const Ray& ray, const DualBasis& basis) const;
 
 private:
-    /// The tile's rectangle [u_lo, u_hi] × [v_lo, v_hi] and a margin for the
-    /// rounding of a projection whose coordinates reach `largest`.
+    /// The tile's rectangle [u_lo, u_hi] × [v_lo, v_hi] and a margin far
+    /// wider than the rounding of a ray's (u, v).
     struct Rectangle {
         double u_lo, u_hi, v_lo, v_hi;
-        [[nodiscard]] double margin(double largest) const;
+        [[nodiscard]] double margin() const;
     };
     [[nodiscard]] Rectangle rectangle() const;
     [[nodiscard]] Vec3d depth_form() const {
