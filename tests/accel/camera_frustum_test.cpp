@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "zeroset/accel/camera_frustum.hpp"
@@ -104,6 +105,25 @@ TEST(CameraFrustum, BoxesBehindBesideAndAroundTheEye) {
     constexpr double inf = INFINITY;
     EXPECT_FALSE(f.misses({{-inf, -inf, -inf}, {inf, inf, inf}}));                 // everything
     EXPECT_FALSE(f.misses({{NAN, 0, 0}, {1, 1, 1}}));                              // not a box: never culled
+}
+
+// A review's case: with the eye at the origin, a box of one subnormal point
+// on a ray of the tile (on its left edge) — the products of the plane test
+// underflow, and a tolerance relative to the sizes alone rounds to 0.
+TEST(CameraFrustum, ASubnormalBoxOnATilesRayIsNotCulled) {
+    CameraFrustum f;
+    f.origin = {0, 0, 0};
+    f.forward = {0.11152181372875017, 0.29113174319599172, 0.95016061440490851};
+    f.right = {0.98428846941506054, -0.16406619212514387, -0.065257134308156273};
+    f.up = {0.13689081064559197, 0.94250973082786715, -0.30485457722588677};
+    f.u0 = 0.35606240767633879;
+    f.v0 = -1.0093599080721614;
+    f.du = f.dv = 0.01;
+    f.columns = f.rows = 1;
+    const Vec3d d{5, -11, 19};
+    ASSERT_TRUE(f.holds(Ray{f.origin, d}, f.dual_basis().value()));
+    const Vec3d q = d * std::numeric_limits<double>::denorm_min();  // on the ray at t = 2⁻¹⁰⁷⁴
+    EXPECT_FALSE(f.misses({q, q}));
 }
 
 }  // namespace

@@ -116,7 +116,13 @@ std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay
 
 Blob::RaySizes::RaySizes(const Ray& r)
     : ray(r), origin_length(length(r.origin)), dir_length(length(r.dir)), origin_largest(max_abs(r.origin)),
-      dir_largest(max_abs(r.dir)), inverse_dir_square(1.0 / dot(r.dir, r.dir)) {}
+      dir_largest(max_abs(r.dir)) {
+    // Where |d|² is near underflow or overflow (1/|d|² = 0 would measure the
+    // origin's distance, not the ray's), NaN: passes_beside then never rejects.
+    const double dir_square = dot(r.dir, r.dir);
+    inverse_dir_square = dir_square >= 0x1p-900 && dir_square <= 0x1p900 ? 1.0 / dir_square
+                                                                          : std::numeric_limits<double>::quiet_NaN();
+}
 
 bool Blob::passes_beside(const RaySizes& sizes, const Vec3d& point, double point_largest, double radius) {
     const Ray& ray = sizes.ray;
@@ -441,13 +447,17 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
         // The ray leaves the eye: a component no nearer it than `nearest`
         // enters at t ≥ nearest/|dir|, and so does every one after it.
         const double per_length = (1.0 - 8.0 * u4) / length(ray.dir);
+        // The beside test's rounding argument holds where |d|² and the bound
+        // are normal doubles, far from underflow and overflow.
         const double dir_square = dot(ray.dir, ray.dir);
+        const bool beside_tested = dir_square >= 0x1p-900 && dir_square <= 0x1p900;
         bool going = true;
         for (const BlobScratch::TileList::Entry& e : list->entries) {
             const double enters = e.nearest * per_length;
             if (enters > span.t1) break;
-            const double along = dot(e.from_center, ray.dir);
-            if (along * along < e.beside * dir_square) continue;  // passes beside its reach
+            const double along = dot(e.from_center, ray.dir), bound = e.beside * dir_square;
+            if (beside_tested && along * along < bound && bound >= 0x1p-900 && bound <= 0x1p900)
+                continue;  // passes beside its reach
             if (!s.events.empty() && s.events.front().t < enters && !(going = advance(enters))) break;
             meet(e.component, true);
         }

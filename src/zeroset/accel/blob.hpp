@@ -176,7 +176,7 @@ private:
         const Ray& ray;
         double origin_length, dir_length;
         double origin_largest, dir_largest;  // largest |coordinate|
-        double inverse_dir_square;           // 1/|dir|²
+        double inverse_dir_square;           // 1/|dir|² (NaN where |dir|² is outside 2^±900)
         explicit RaySizes(const Ray& r);
     };
     [[nodiscard]] const Mat4& to_kernel(const Component& c) const { return model().to_kernel(c.index); }

@@ -47,7 +47,8 @@ bool CameraFrustum::misses(const Box3& box, const Planes& planes) const {
             size += std::abs(n[axis]) * (std::abs(box.lo[axis]) + std::abs(box.hi[axis]) + 2.0 * std::abs(origin[axis]));
         }
         // Endless boxes give ∞ − ∞ or 0·∞: NaN compares false, never culled.
-        if (most < -1e-12 * size) return true;
+        // (The products may underflow, by half the least subnormal each.)
+        if (most < -1e-12 * size - 4.0 * std::numeric_limits<double>::denorm_min()) return true;
     }
     return false;
 }
