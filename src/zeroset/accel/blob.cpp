@@ -20,6 +20,11 @@ constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units 
 // without the tree's walk.
 constexpr std::size_t few_components = 4;
 
+/// Whether a square (|d|², or the beside test's bound) is a normal double
+/// far from underflow and overflow, where the beside tests' rounding
+/// arguments hold.
+bool well_scaled(double square) { return square >= 0x1p-900 && square <= 0x1p900; }
+
 /// The events' heap order: the earliest on top, and at equal t entries first.
 bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
     return a.t > b.t || (a.t == b.t && a.kind > b.kind);
@@ -116,13 +121,10 @@ std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay
 
 Blob::RaySizes::RaySizes(const Ray& r)
     : ray(r), origin_length(length(r.origin)), dir_length(length(r.dir)), origin_largest(max_abs(r.origin)),
-      dir_largest(max_abs(r.dir)) {
-    // Where |d|² is near underflow or overflow (1/|d|² = 0 would measure the
-    // origin's distance, not the ray's), NaN: passes_beside then never rejects.
-    const double dir_square = dot(r.dir, r.dir);
-    inverse_dir_square = dir_square >= 0x1p-900 && dir_square <= 0x1p900 ? 1.0 / dir_square
-                                                                          : std::numeric_limits<double>::quiet_NaN();
-}
+      dir_largest(max_abs(r.dir)), dir_square(dot(r.dir, r.dir)),
+      // Where |d|² is near underflow or overflow (1/|d|² = 0 would measure the
+      // origin's distance, not the ray's), NaN: passes_beside then never rejects.
+      inverse_dir_square(well_scaled(dir_square) ? 1.0 / dir_square : std::numeric_limits<double>::quiet_NaN()) {}
 
 bool Blob::passes_beside(const RaySizes& sizes, const Vec3d& point, double point_largest, double radius) {
     const Ray& ray = sizes.ray;
@@ -447,17 +449,13 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
         // The ray leaves the eye: a component no nearer it than `nearest`
         // enters at t ≥ nearest/|dir|, and so does every one after it.
         const double per_length = (1.0 - 8.0 * u4) / length(ray.dir);
-        // The beside test's rounding argument holds where |d|² and the bound
-        // are normal doubles, far from underflow and overflow.
-        const double dir_square = dot(ray.dir, ray.dir);
-        const bool beside_tested = dir_square >= 0x1p-900 && dir_square <= 0x1p900;
+        const bool beside_tested = well_scaled(sizes.dir_square);
         bool going = true;
         for (const BlobScratch::TileList::Entry& e : list->entries) {
             const double enters = e.nearest * per_length;
             if (enters > span.t1) break;
-            const double along = dot(e.from_center, ray.dir), bound = e.beside * dir_square;
-            if (beside_tested && along * along < bound && bound >= 0x1p-900 && bound <= 0x1p900)
-                continue;  // passes beside its reach
+            const double along = dot(e.from_center, ray.dir), bound = e.beside * sizes.dir_square;
+            if (beside_tested && along * along < bound && well_scaled(bound)) continue;  // passes beside its reach
             if (!s.events.empty() && s.events.front().t < enters && !(going = advance(enters))) break;
             meet(e.component, true);
         }

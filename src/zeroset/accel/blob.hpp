@@ -176,6 +176,7 @@ private:
         const Ray& ray;
         double origin_length, dir_length;
         double origin_largest, dir_largest;  // largest |coordinate|
+        double dir_square;                   // |dir|²
         double inverse_dir_square;           // 1/|dir|² (NaN where |dir|² is outside 2^±900)
         explicit RaySizes(const Ray& r);
     };

@@ -38,13 +38,16 @@ bool CameraFrustum::misses(const Box3& box) const {
 
 bool CameraFrustum::misses(const Box3& box, const Planes& planes) const {
     if (!box.valid()) return false;  // NaN, or nothing: never culled
+    const Vec3d lo = box.lo - origin, hi = box.hi - origin;
+    Vec3d magnitude;  // what the offsets' rounding is relative to
+    for (int axis = 0; axis < 3; ++axis)
+        magnitude[axis] = std::abs(box.lo[axis]) + std::abs(box.hi[axis]) + 2.0 * std::abs(origin[axis]);
     for (const Vec3d& n : planes.forms) {
         // The form's largest value over the box, and a bound far above its rounding.
         double most = 0.0, size = 0.0;
         for (int axis = 0; axis < 3; ++axis) {
-            const double lo = n[axis] * (box.lo[axis] - origin[axis]), hi = n[axis] * (box.hi[axis] - origin[axis]);
-            most += std::max(lo, hi);
-            size += std::abs(n[axis]) * (std::abs(box.lo[axis]) + std::abs(box.hi[axis]) + 2.0 * std::abs(origin[axis]));
+            most += std::max(n[axis] * lo[axis], n[axis] * hi[axis]);
+            size += std::abs(n[axis]) * magnitude[axis];
         }
         // Endless boxes give ∞ − ∞ or 0·∞: NaN compares false, never culled.
         // (The products may underflow, by half the least subnormal each.)
