@@ -194,6 +194,45 @@ TEST_P(BatchBackends, PlainAndBatchAgree) {
     }
 }
 
+/// Constants are broadcast, never spread over lanes, except for the ops
+/// that read lanes one by one: a constant on either side of every binary
+/// op, into the vector functions' fallbacks, and a tape that is a constant.
+TEST_P(BatchBackends, ConstantOperandsOnEitherSide) {
+    const Expr c(0.375);
+    const std::vector<std::pair<std::string, Expr>> functions = {
+        {"c + x", c + X},       {"x - c", X - c},           {"c - x", c - X},
+        {"c / x", c / X},       {"x / c", X / c},           {"min(c, x)", min(c, X)},
+        {"max(x, c)", max(X, c)}, {"hypot(x, c)", hypot(X, c)}, {"hypot(c, y)", hypot(c, Y)},
+        {"lse(c, x)", log_sum_exp(c, 3.0 * X)}, {"lse(x, c)", log_sum_exp(3.0 * X, c)},
+        {"atan2(c, x)", atan2(c, X)}, {"pow(c, x)", pow(c, X)}, {"pow(x + 2, c)", pow(X + 2.0, c)},
+        {"a constant", Expr(-1.5)},
+    };
+    std::vector<double> x(point_count), y(point_count), z(point_count), out(point_count);
+    std::vector<float> xf(point_count), yf(point_count), zf(point_count), out_f(point_count);
+    for (int i = 0; i < point_count; ++i) {
+        xf[i] = static_cast<float>(-1.0 + 2.0 * i / point_count);
+        yf[i] = static_cast<float>(0.5 - 1.0 * i / point_count);
+        zf[i] = 0.25f;
+        x[i] = xf[i];
+        y[i] = yf[i];
+        z[i] = zf[i];
+    }
+    for (const auto& [name, f] : functions) {
+        SCOPED_TRACE(name);
+        const Tape tape(f);
+        Evaluator<double> eval(tape);
+        Evaluator<float> eval_f(tape);
+        BatchEvaluator<double> batch(tape);
+        BatchEvaluator<float> batch_f(tape);
+        batch.evaluate(x, y, z, out);
+        batch_f.evaluate(xf, yf, zf, out_f);
+        for (int i = 0; i < point_count; ++i) {
+            ASSERT_TRUE(close(out[i], eval(x[i], y[i], z[i]), 1e-15)) << "double at point " << i;
+            ASSERT_TRUE(close(out_f[i], eval_f(xf[i], yf[i], zf[i]), 1e-6)) << "float at point " << i;
+        }
+    }
+}
+
 /// Lanes outside the vector functions' ranges, NaN and ±∞ behave as the
 /// scalar functions do: overflow to ∞, log of 0 and of negatives, huge
 /// arguments of sin and cos, NaN through min and max from either side.

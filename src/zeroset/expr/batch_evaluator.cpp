@@ -2,16 +2,11 @@
 #include "zeroset/expr/batch_evaluator.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 namespace zeroset {
 
 template <class F>
-BatchEvaluator<F>::BatchEvaluator(const Tape& tape)
-    : tape_(&tape),
-      slots_(static_cast<std::size_t>(tape.slot_count()) * lanes),
-      constant_(tape.slot_count()),
-      filled_(tape.slot_count(), 0) {
+BatchEvaluator<F>::BatchEvaluator(const Tape& tape) : tape_(&tape) {
     load_constants();
 }
 
@@ -21,37 +16,46 @@ void BatchEvaluator<F>::rebind(const Tape& tape) {
     load_constants();
 }
 
+/// Marks the bound tape's constant slots and its clauses' outputs: those
+/// are all the slots besides x, y and z that its clauses read.
 template <class F>
 void BatchEvaluator<F>::load_constants() {
+    const std::size_t slot_count = tape_->slot_count();
+    if (is_constant_.size() < slot_count) {
+        slots_.resize(slot_count * lanes);
+        is_constant_.resize(slot_count, 0);
+        constant_.resize(slot_count);
+    }
+    for (const Clause& c : tape_->clauses()) is_constant_[c.out] = 0;
     for (const auto& [s, value] : tape_->constants()) {
-        const F v = static_cast<F>(value);
-        if (filled_[s] && std::memcmp(&constant_[s], &v, sizeof v) == 0) continue;  // bits, for −0 and NaN
-        std::fill_n(slot(s), lanes, v);
-        constant_[s] = v;
-        filled_[s] = 1;
+        is_constant_[s] = 1;
+        constant_[s] = static_cast<F>(value);
     }
 }
 
 template <class F>
 void BatchEvaluator<F>::evaluate(std::span<const F> x, std::span<const F> y, std::span<const F> z,
                                  std::span<F> out) {
+    const std::uint32_t result = tape_->result_slot();
+    if (is_constant_[result]) {  // f is a constant: no clause to run
+        std::fill(out.begin(), out.end(), constant_[result]);
+        return;
+    }
     for (std::size_t start = 0; start < out.size(); start += lanes) {
         const std::size_t count = std::min(lanes, out.size() - start);
         std::copy_n(x.data() + start, count, slot(Tape::slot_x));
         std::copy_n(y.data() + start, count, slot(Tape::slot_y));
         std::copy_n(z.data() + start, count, slot(Tape::slot_z));
         evaluate_lanes();
-        std::copy_n(slot(tape_->result_slot()), count, out.data() + start);
+        std::copy_n(slot(result), count, out.data() + start);
     }
-    // The clauses wrote over their slots, which another tape may use for a constant.
-    for (const Clause& c : tape_->clauses()) filled_[c.out] = 0;
 }
 
 // Every lane is computed even in a partial batch: the loop count stays a
 // compile-time constant (clean SIMD), and stale lanes are simply not copied out.
 template <class F>
 void BatchEvaluator<F>::evaluate_lanes() {
-    run_batch_lanes(tape_->clauses().data(), tape_->clauses().size(), slots_.data());
+    run_batch_lanes(tape_->clauses().data(), tape_->clauses().size(), slots_.data(), constants());
 }
 
 template class BatchEvaluator<float>;

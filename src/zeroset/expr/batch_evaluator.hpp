@@ -31,15 +31,15 @@ public:
 private:
     void evaluate_lanes();
     void load_constants();
+    [[nodiscard]] BatchConstants<F> constants() const { return {is_constant_.data(), constant_.data()}; }
     F* slot(std::uint32_t s) { return slots_.data() + static_cast<std::size_t>(s) * lanes; }
 
     const Tape* tape_;
     std::vector<F> slots_;  // slot-major: slot s occupies [s·lanes, (s+1)·lanes)
-    // Per slot: the constant its lanes hold, while `filled` says they still
-    // do. Pruned tapes of one region often put the same constants in the
-    // same slots, and a rebind then fills only what changed.
+    // Per slot, for the bound tape: whether it holds a constant, and which.
+    // The lane loops broadcast those; a constant slot's lanes are never filled.
+    std::vector<std::uint8_t> is_constant_;
     std::vector<F> constant_;
-    std::vector<std::uint8_t> filled_;
 };
 
 extern template class BatchEvaluator<float>;

@@ -6,6 +6,7 @@
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -30,27 +31,66 @@ public:
     using D = hn::ScalableTag<F>;
     using V = hn::Vec<D>;
 
-    static void run(const Clause* clauses, std::size_t count, F* slots) {
+    static void run(const Clause* clauses, std::size_t count, F* slots, BatchConstants<F> constants) {
+        // Lanes for a constant operand of an op that reads its operands lane
+        // by lane (the vector functions' out-of-range lanes, per-lane ops).
+        HWY_ALIGN F spill[2][batch_lanes];
+        const auto operand = [&](std::uint32_t s, F* spill_to) {
+            return constants.is_constant[s] ? Operand{nullptr, constants.value[s], spill_to}
+                                            : Operand{slots + s * batch_lanes, F(0), nullptr};
+        };
         for (std::size_t k = 0; k < count; ++k) {
             const Clause& c = clauses[k];
-            F* HWY_RESTRICT out = slots + c.out * batch_lanes;
-            const F* HWY_RESTRICT a = slots + c.a * batch_lanes;
-            const F* HWY_RESTRICT b = c.op == Op::Powi ? a : slots + c.b * batch_lanes;
-            clause(c, out, a, b);
+            const Operand a = operand(c.a, spill[0]);
+            const Operand b = op_arity(c.op) == 2 ? operand(c.b, spill[1]) : a;
+            clause(c, slots + c.out * batch_lanes, a, b);
         }
     }
 
 private:
-    template <class Fn>
-    static void unary(F* HWY_RESTRICT out, const F* HWY_RESTRICT a, Fn fn) {
+    /// A clause's operand: a slot's lanes, or a constant (lanes null).
+    struct Operand {
+        const F* lanes;
+        F value;
+        F* spill;  // where a constant is spread out when lanes are needed
+
+        /// The operand's lanes, a constant's spread out over `spill`.
+        const F* spread() const {
+            if (lanes) return lanes;
+            std::fill_n(spill, batch_lanes, value);
+            return spill;
+        }
+    };
+    struct Lanes {
+        const F* at;
+        V operator()(D d, std::size_t i) const { return hn::LoadU(d, at + i); }
+    };
+    struct Broadcast {
+        F value;
+        V operator()(D d, std::size_t) const { return hn::Set(d, value); }
+    };
+
+    template <class A, class Fn>
+    static void unary_loop(F* HWY_RESTRICT out, A a, Fn fn) {
         const D d;
-        for (std::size_t i = 0; i < batch_lanes; i += hn::Lanes(d)) hn::StoreU(fn(d, hn::LoadU(d, a + i)), d, out + i);
+        for (std::size_t i = 0; i < batch_lanes; i += hn::Lanes(d)) hn::StoreU(fn(d, a(d, i)), d, out + i);
+    }
+    template <class A, class B, class Fn>
+    static void binary_loop(F* HWY_RESTRICT out, A a, B b, Fn fn) {
+        const D d;
+        for (std::size_t i = 0; i < batch_lanes; i += hn::Lanes(d)) hn::StoreU(fn(d, a(d, i), b(d, i)), d, out + i);
     }
     template <class Fn>
-    static void binary(F* HWY_RESTRICT out, const F* HWY_RESTRICT a, const F* HWY_RESTRICT b, Fn fn) {
-        const D d;
-        for (std::size_t i = 0; i < batch_lanes; i += hn::Lanes(d))
-            hn::StoreU(fn(d, hn::LoadU(d, a + i), hn::LoadU(d, b + i)), d, out + i);
+    static void unary(F* HWY_RESTRICT out, const Operand& a, Fn fn) {
+        if (a.lanes) unary_loop(out, Lanes{a.lanes}, fn);
+        else unary_loop(out, Broadcast{a.value}, fn);
+    }
+    template <class Fn>
+    static void binary(F* HWY_RESTRICT out, const Operand& a, const Operand& b, Fn fn) {
+        if (a.lanes && b.lanes) binary_loop(out, Lanes{a.lanes}, Lanes{b.lanes}, fn);
+        else if (a.lanes) binary_loop(out, Lanes{a.lanes}, Broadcast{b.value}, fn);
+        else if (b.lanes) binary_loop(out, Broadcast{a.value}, Lanes{b.lanes}, fn);
+        else binary_loop(out, Broadcast{a.value}, Broadcast{b.value}, fn);
     }
     /// A vector function accurate in [lo, hi]; lanes outside (or NaN) take `scalar`.
     template <class Fn, class Scalar>
@@ -116,7 +156,7 @@ private:
         return invert ? hn::Div(hn::Set(d, F(1)), result) : result;
     }
 
-    static void clause(const Clause& c, F* HWY_RESTRICT out, const F* HWY_RESTRICT a, const F* HWY_RESTRICT b) {
+    static void clause(const Clause& c, F* HWY_RESTRICT out, const Operand& a, const Operand& b) {
         constexpr F max_finite = std::numeric_limits<F>::max();
         using R = VectorMathRange<F>;
         switch (c.op) {
@@ -143,33 +183,33 @@ private:
                 break;
             }
             case Op::Exp:
-                ranged(out, a, -max_finite, R::exp_max, [](D d, V x) { return hn::Exp(d, x); }, [](F x) { return std::exp(x); });
+                ranged(out, a.spread(), -max_finite, R::exp_max, [](D d, V x) { return hn::Exp(d, x); }, [](F x) { return std::exp(x); });
                 break;
             case Op::Log:
-                ranged(out, a, std::numeric_limits<F>::min(), max_finite, [](D d, V x) { return hn::Log(d, x); },
+                ranged(out, a.spread(), std::numeric_limits<F>::min(), max_finite, [](D d, V x) { return hn::Log(d, x); },
                        [](F x) { return std::log(x); });
                 break;
             case Op::Sin:
-                ranged(out, a, -R::trig_max, R::trig_max, [](D d, V x) { return hn::Sin(d, x); }, [](F x) { return std::sin(x); });
+                ranged(out, a.spread(), -R::trig_max, R::trig_max, [](D d, V x) { return hn::Sin(d, x); }, [](F x) { return std::sin(x); });
                 break;
             case Op::Cos:
-                ranged(out, a, -R::trig_max, R::trig_max, [](D d, V x) { return hn::Cos(d, x); }, [](F x) { return std::cos(x); });
+                ranged(out, a.spread(), -R::trig_max, R::trig_max, [](D d, V x) { return hn::Cos(d, x); }, [](F x) { return std::cos(x); });
                 break;
             case Op::Atan:
-                ranged(out, a, -max_finite, max_finite, [](D d, V x) { return hn::Atan(d, x); }, [](F x) { return std::atan(x); });
+                ranged(out, a.spread(), -max_finite, max_finite, [](D d, V x) { return hn::Atan(d, x); }, [](F x) { return std::atan(x); });
                 break;
-            case Op::LogSumExp: log_sum_exp(out, a, b); break;
-            case Op::Hypot: hypot(out, a, b); break;
-            case Op::Tan: case Op::Atan2: case Op::Pow: per_lane(c, out, a, b); break;
+            case Op::LogSumExp: log_sum_exp(out, a.spread(), b.spread()); break;
+            case Op::Hypot: hypot(out, a.spread(), b.spread()); break;
+            case Op::Tan: case Op::Atan2: case Op::Pow: per_lane(c, out, a.spread(), b.spread()); break;
         }
     }
 };
 
-void RunFloatLanes(const Clause* clauses, std::size_t count, float* slots) {
-    LaneLoops<float>::run(clauses, count, slots);
+void RunFloatLanes(const Clause* clauses, std::size_t count, float* slots, BatchConstants<float> constants) {
+    LaneLoops<float>::run(clauses, count, slots, constants);
 }
-void RunDoubleLanes(const Clause* clauses, std::size_t count, double* slots) {
-    LaneLoops<double>::run(clauses, count, slots);
+void RunDoubleLanes(const Clause* clauses, std::size_t count, double* slots, BatchConstants<double> constants) {
+    LaneLoops<double>::run(clauses, count, slots, constants);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -182,11 +222,11 @@ namespace zeroset {
 HWY_EXPORT(RunFloatLanes);
 HWY_EXPORT(RunDoubleLanes);
 
-void run_batch_lanes(const Clause* clauses, std::size_t count, float* slots) {
-    HWY_DYNAMIC_DISPATCH(RunFloatLanes)(clauses, count, slots);
+void run_batch_lanes(const Clause* clauses, std::size_t count, float* slots, BatchConstants<float> constants) {
+    HWY_DYNAMIC_DISPATCH(RunFloatLanes)(clauses, count, slots, constants);
 }
-void run_batch_lanes(const Clause* clauses, std::size_t count, double* slots) {
-    HWY_DYNAMIC_DISPATCH(RunDoubleLanes)(clauses, count, slots);
+void run_batch_lanes(const Clause* clauses, std::size_t count, double* slots, BatchConstants<double> constants) {
+    HWY_DYNAMIC_DISPATCH(RunDoubleLanes)(clauses, count, slots, constants);
 }
 
 std::string batch_simd_target() {
