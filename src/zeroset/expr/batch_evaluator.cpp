@@ -36,26 +36,29 @@ void BatchEvaluator<F>::load_constants() {
 template <class F>
 void BatchEvaluator<F>::evaluate(std::span<const F> x, std::span<const F> y, std::span<const F> z,
                                  std::span<F> out) {
-    const std::uint32_t result = tape_->result_slot();
-    if (is_constant_[result]) {  // f is a constant: no clause to run
-        std::fill(out.begin(), out.end(), constant_[result]);
-        return;
-    }
+    const Inputs in = inputs();
     for (std::size_t start = 0; start < out.size(); start += lanes) {
         const std::size_t count = std::min(lanes, out.size() - start);
-        std::copy_n(x.data() + start, count, slot(Tape::slot_x));
-        std::copy_n(y.data() + start, count, slot(Tape::slot_y));
-        std::copy_n(z.data() + start, count, slot(Tape::slot_z));
-        evaluate_lanes();
-        std::copy_n(slot(result), count, out.data() + start);
+        std::copy_n(x.data() + start, count, in.x);
+        std::copy_n(y.data() + start, count, in.y);
+        std::copy_n(z.data() + start, count, in.z);
+        std::copy_n(evaluate_in_place().begin(), count, out.data() + start);
     }
 }
 
 // Every lane is computed even in a partial batch: the loop count stays a
 // compile-time constant (clean SIMD), and stale lanes are simply not copied out.
 template <class F>
-void BatchEvaluator<F>::evaluate_lanes() {
-    run_batch_lanes(tape_->clauses().data(), tape_->clauses().size(), slots_.data(), constants());
+std::span<const F, BatchEvaluator<F>::lanes> BatchEvaluator<F>::evaluate_in_place() {
+    const std::uint32_t result = tape_->result_slot();
+    if (is_constant_[result]) {
+        // f is a constant: no clause runs, and the slot's lanes are free to
+        // hold it (constant slots are read by broadcast).
+        std::fill_n(slot(result), lanes, constant_[result]);
+    } else {
+        run_batch_lanes(tape_->clauses().data(), tape_->clauses().size(), slots_.data(), constants());
+    }
+    return std::span<const F, lanes>(slot(result), lanes);
 }
 
 template class BatchEvaluator<float>;

@@ -28,8 +28,19 @@ public:
     /// out[i] = f(x[i], y[i], z[i]) for every i; all spans of equal length.
     void evaluate(std::span<const F> x, std::span<const F> y, std::span<const F> z, std::span<F> out);
 
+    /// For a caller that writes one batch's points in place: the `lanes`
+    /// values of x, y and z to fill (lanes left unfilled are computed from
+    /// stale values and mean nothing), then evaluate_in_place().
+    struct Inputs {
+        F* x;
+        F* y;
+        F* z;
+    };
+    Inputs inputs() { return {slot(Tape::slot_x), slot(Tape::slot_y), slot(Tape::slot_z)}; }
+    /// f at the points in inputs(), lane by lane; valid until the next call.
+    std::span<const F, lanes> evaluate_in_place();
+
 private:
-    void evaluate_lanes();
     void load_constants();
     [[nodiscard]] BatchConstants<F> constants() const { return {is_constant_.data(), constant_.data()}; }
     F* slot(std::uint32_t s) { return slots_.data() + static_cast<std::size_t>(s) * lanes; }

@@ -196,15 +196,15 @@ private:
     }
 
     void evaluate_leaf(int x0, int y0, const Tape& tape) {
+        static_assert(leaf_pixels <= BatchEvaluator<float>::lanes, "a leaf is one batch");
         const int x1 = std::min(x0 + leaf_size, size_), y1 = std::min(y0 + leaf_size, size_);
-        grid_.points(x0, y0, x1, y1, xs_.data(), ys_.data(), zs_.data());
-        auto n = static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0);
         batch_.rebind(tape);
-        batch_.evaluate(std::span(xs_).first(n), std::span(ys_).first(n), std::span(zs_).first(n),
-                        std::span(out_).first(n));
-        n = 0;
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) row(y)[x] = out_[n++];
+        const BatchEvaluator<float>::Inputs in = batch_.inputs();
+        grid_.points(x0, y0, x1, y1, in.x, in.y, in.z);
+        const std::span<const float> values = batch_.evaluate_in_place();
+        std::size_t n = 0;
+        for (int y = y0; y < y1; ++y, n += static_cast<std::size_t>(x1 - x0))
+            std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(n), x1 - x0, row(y) + x0);
         ++stats.leaf_batches;
         stats.pixels_evaluated += n;
         stats.leaf_clauses += tape.clauses().size();
@@ -218,7 +218,6 @@ private:
     TapePruner pruner_;
     BatchEvaluator<float> batch_;
     std::vector<std::array<Tape, TapePruner::lanes>> pruned_;  // pruned_[d]: the tapes of the sub-tiles of the tile at depth d
-    std::array<float, leaf_pixels> xs_{}, ys_{}, zs_{}, out_{};
 };
 
 void add(SliceStats& total, const SliceStats& part) {
