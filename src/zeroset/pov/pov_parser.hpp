@@ -8,7 +8,8 @@
 // stream, directives, macros, symbols), pov_expressions.cpp (numbers,
 // vectors, colours, strings), pov_functions.cpp (function { … } as
 // expressions of x, y, z), pov_textures.cpp (textures and materials),
-// pov_objects.cpp (objects, CSG and transforms) and pov_scene.cpp (camera,
+// pov_objects.cpp (modifiers, CSG and transforms), pov_solids.cpp and
+// pov_primitives.cpp (the objects themselves) and pov_scene.cpp (camera,
 // lights, global settings and the top level).
 #pragma once
 
@@ -193,7 +194,7 @@ private:
     PovFinish default_finish_;
     std::optional<std::array<double, 5>> default_color_;
 
-    // ---- pov_objects.cpp: objects, CSG, transforms ----
+    // ---- pov_objects.cpp, pov_solids.cpp, pov_primitives.cpp: objects, CSG, transforms ----
     struct ObjectBuilder;
     [[nodiscard]] bool starts_object(const PovToken& t) const;
     std::shared_ptr<const PovObject> object_statement();
