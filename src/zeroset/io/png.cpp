@@ -7,6 +7,7 @@
 #include "zeroset/io/png.hpp"
 
 #include <png.h>
+#include <zlib.h>
 
 #include <array>
 #include <csetjmp>
@@ -107,6 +108,13 @@ bool write_png_phase(png_structp png, png_infop info, std::vector<std::uint8_t>*
     png_set_write_fn(png, out, write_to_vector, flush_nothing);
     png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
+    // Written for speed: libpng's defaults (zlib level 6, the best of five
+    // filters per row) took 19–27 ms for a 640×480 or 800×600 render, 10–15 %
+    // of the whole run; Paeth rows run-length coded at level 2 take 4.5–6.5
+    // ms for files about 30 % larger (docs/rendering.md).
+    png_set_compression_level(png, 2);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_PAETH);
+    png_set_compression_strategy(png, Z_RLE);
     // sRGB chunk, plus the matching gAMA and cHRM for decoders that ignore sRGB.
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_write_info(png, info);
