@@ -21,6 +21,10 @@ public:
     static constexpr std::size_t lanes = batch_lanes;
 
     explicit BatchEvaluator(const Tape& tape);
+    /// Bound to no tape yet: rebind() before evaluating. Its lanes are sized
+    /// by the tapes it is bound to, so one that only ever sees short pruned
+    /// tapes never holds the full tape's (1.4 MB for prospero in float).
+    BatchEvaluator() = default;
 
     /// Switches to the original tape or one pruned from it, as Evaluator::rebind.
     void rebind(const Tape& tape);
@@ -45,7 +49,7 @@ private:
     [[nodiscard]] BatchConstants<F> constants() const { return {is_constant_.data(), constant_.data()}; }
     F* slot(std::uint32_t s) { return slots_.data() + static_cast<std::size_t>(s) * lanes; }
 
-    const Tape* tape_;
+    const Tape* tape_ = nullptr;
     std::vector<F> slots_;  // slot-major: slot s occupies [s·lanes, (s+1)·lanes)
     // Per slot, for the bound tape: whether it holds a constant, and which.
     // The lane loops broadcast those; a constant slot's lanes are never filled.

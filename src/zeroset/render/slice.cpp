@@ -117,7 +117,7 @@ class TileVisitor {
 public:
     TileVisitor(const Tape& full, const PixelGrid& grid, const SliceSettings& settings, LargeBuffer<float>& values)
         : grid_(grid), size_(settings.size), every_pixel_(settings.every_pixel), values_(values), pruner_(full),
-          batch_(full), pruned_(max_depth) {}
+          pruned_(max_depth) {}
 
     /// Evaluates f over the tile of side `side` at (x0, y0) with `parent`'s
     /// tape. Fills the tile when its sign is decided and returns nullptr;
@@ -216,7 +216,7 @@ private:
     bool every_pixel_;
     LargeBuffer<float>& values_;
     TapePruner pruner_;
-    BatchEvaluator<float> batch_;
+    BatchEvaluator<float> batch_;  // bound to each leaf's tape in turn
     std::vector<std::array<Tape, TapePruner::lanes>> pruned_;  // pruned_[d]: the tapes of the sub-tiles of the tile at depth d
 };
 
