@@ -81,7 +81,10 @@ PossibleRoot subdivide(PolynomialEnclosure f, double t0, double t1, const Polyno
     const double per_split = static_cast<double>(n) * eps * magnitude;
     const double span_radius = enclosure_bound(f, std::max(-t0, t1));
     while (top > 0) {
-        const Piece piece = stack[--top];
+        // The piece on top, read where it lies: copied whole, its
+        // coefficients (written one by one by the split) were read back in
+        // wider loads than they were stored with, which stalls.
+        Piece& piece = stack[--top];
         // F − F̂'s Bernstein coefficients on [a, b] are at most R(max(|a|, |b|)),
         // and at most R at the span's far end: that bound, found once, settles
         // most pieces; only those it leaves undecided pay for their own.
@@ -123,9 +126,15 @@ PossibleRoot subdivide(PolynomialEnclosure f, double t0, double t1, const Polyno
             return r;
         }
         ++r.evaluations;
-        stack[top + 1] = {piece.a, m, piece.depth + 1, {}};
-        stack[top] = {m, piece.b, piece.depth + 1, {}};
-        split_bernstein(piece.c.data(), n, stack[top + 1].c.data(), stack[top].c.data());
+        // The right half takes the piece's place (its coefficients in place)
+        // and the left goes on top.
+        Piece& left = stack[top + 1];
+        left.a = piece.a;
+        left.b = m;
+        left.depth = piece.depth + 1;
+        split_bernstein(piece.c.data(), n, left.c.data(), piece.c.data());
+        piece.a = m;
+        piece.depth += 1;
         top += 2;
     }
     return r;
