@@ -305,8 +305,4 @@ void RayPolynomialProgram::evaluate(const Ray& ray, double t_c) {
     }
 }
 
-double RayPolynomialProgram::radius(int i) const {
-    return radius_scale_ * magnitude_[static_cast<std::size_t>(i)];
-}
-
 }  // namespace zeroset

@@ -75,7 +75,7 @@ public:
     [[nodiscard]] std::span<const double> magnitude() const { return result(magnitude_); }
     /// r_i ≥ |c_i − ĉ_i| for G's exact coefficient c_i (+∞ when the bound is
     /// lost).
-    [[nodiscard]] double radius(int i) const;
+    [[nodiscard]] double radius(int i) const { return radius_scale_ * magnitude_[static_cast<std::size_t>(i)]; }
 
     // The compiled steps; public for the step kernels (ray_polynomial_program.cpp).
     enum class StepKind : std::uint8_t { Add, Sub, Neg, Mul, Scale };

@@ -60,6 +60,14 @@ bool defined_along(RayFunction& h, std::span<const double> f, const CentredSpan&
 PolynomialMethod::PolynomialMethod(const Tape& tape, const RootFinderSettings& settings)
     : settings_(settings), program_(compiled(tape)) {}
 
+// Inlined into its callers: returned through memory, its spans were read
+// back in wider loads than they were written with, which stalls.
+[[gnu::always_inline]] inline PolynomialEnclosure PolynomialMethod::current_enclosure() {
+    const std::span<const double> value = program_.value();
+    for (std::size_t i = 0; i < value.size(); ++i) radius_[i] = program_.radius(static_cast<int>(i));
+    return {value, std::span<const double>(radius_.data(), value.size())};
+}
+
 int PolynomialMethod::solve(std::span<const double> c, double t0, double t1, std::span<double> out,
                             TraceCounters& counters) const {
     PolynomialSolver solver = settings_.polynomial_solver;
@@ -136,12 +144,6 @@ double PolynomialMethod::rounding_bound(const Ray& ray, Span span) {
     program_.evaluate(ray, c.t_c);
     const PolynomialEnclosure f = current_enclosure();
     return std::max(enclosure_bound(f, c.s0), enclosure_bound(f, c.s1));
-}
-
-PolynomialEnclosure PolynomialMethod::current_enclosure() {
-    const std::span<const double> value = program_.value();
-    for (std::size_t i = 0; i < value.size(); ++i) radius_[i] = program_.radius(static_cast<int>(i));
-    return {value, std::span<const double>(radius_.data(), value.size())};
 }
 
 HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
