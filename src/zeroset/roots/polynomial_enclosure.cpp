@@ -23,7 +23,7 @@ struct EnclosureSample {
     [[nodiscard]] bool uncertain() const { return std::abs(value.value) <= bound; }
 };
 
-EnclosureSample sample_enclosure(PolynomialEnclosure f, double t) {
+EnclosureSample sample_enclosure(const PolynomialEnclosure& f, double t) {
     return {sample_polynomial(f.value, t), enclosure_bound(f, t)};
 }
 
@@ -53,7 +53,7 @@ constexpr auto horner_gammas = [] {
 }();
 }  // namespace
 
-double enclosure_bound(PolynomialEnclosure f, double t) {
+double enclosure_bound(const PolynomialEnclosure& f, double t) {
     const double x = std::abs(t);
     double radius = 0.0;
     double magnitude = 0.0;
@@ -73,7 +73,7 @@ double enclosure_bound(PolynomialEnclosure f, double t) {
     return (radius + horner * magnitude) * (1.0 + horner);
 }
 
-bool provably_positive(PolynomialEnclosure f, double t0, double t1) {
+bool provably_positive(const PolynomialEnclosure& f, double t0, double t1) {
     const int n = static_cast<int>(f.value.size()) - 1;
     double magnitude = 0.0;
     const PolynomialScratch b = to_bernstein(f.value, n, t0, t1, magnitude);
@@ -81,7 +81,7 @@ bool provably_positive(PolynomialEnclosure f, double t0, double t1) {
     return std::all_of(b.begin(), b.begin() + n + 1, [noise](double c) { return c > noise; });
 }
 
-PossibleRoot first_possible_root(PolynomialEnclosure f, double t0, double t1, std::span<const double> extrema,
+PossibleRoot first_possible_root(const PolynomialEnclosure& f, double t0, double t1, std::span<const double> extrema,
                                  bool t1_is_root) {
     PossibleRoot r;
     EnclosureSample a = sample_enclosure(f, t0);
@@ -120,7 +120,7 @@ PossibleRoot first_possible_root(PolynomialEnclosure f, double t0, double t1, st
     return r;
 }
 
-int possible_roots(PolynomialEnclosure f, double t0, double t1, std::span<const double> extrema,
+int possible_roots(const PolynomialEnclosure& f, double t0, double t1, std::span<const double> extrema,
                    std::span<double> out, int& evaluations) {
     int count = 0;
     const auto add = [&](double t) {

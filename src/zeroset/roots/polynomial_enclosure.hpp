@@ -38,20 +38,20 @@ struct PossibleRoot {
 
 /// R(t) plus the rounding of evaluating F̂ at t by Horner's rule (Higham
 /// §5.1: γ₂ₙ·Σ|ĉ_i||t|^i), rounded up: |F(t) − horner(F̂, t)| ≤ this.
-double enclosure_bound(PolynomialEnclosure f, double t);
+double enclosure_bound(const PolynomialEnclosure& f, double t);
 
 /// True when F > 0 throughout [t0, t1], shown by F̂'s Bernstein coefficients
 /// on it (bernstein.hpp) all exceeding the conversion's rounding plus R at
 /// the end farther from 0 (R grows with |t|). A cheap test before the
 /// extrema are found: most spans a ray's bounds hand over hold no root.
 /// False proves nothing.
-bool provably_positive(PolynomialEnclosure f, double t0, double t1);
+bool provably_positive(const PolynomialEnclosure& f, double t0, double t1);
 
 /// The first t in [t0, t1] where F may vanish, given the extrema of F̂ in
 /// [t0, t1] (the roots of F̂′, increasing). When `t1_is_root`, t1 is a root
 /// of F̂ already found (by any solver) and the scan only checks the pieces
 /// before the last extremum ahead of it, answering t1 when they hold none.
-PossibleRoot first_possible_root(PolynomialEnclosure f, double t0, double t1, std::span<const double> extrema,
+PossibleRoot first_possible_root(const PolynomialEnclosure& f, double t0, double t1, std::span<const double> extrema,
                                  bool t1_is_root);
 
 /// Every t in (t0, t1] where F may vanish, increasing, by the same scan over
@@ -59,7 +59,7 @@ PossibleRoot first_possible_root(PolynomialEnclosure f, double t0, double t1, st
 /// within R of 0 without a sign change (a graze, or a double root of F).
 /// Writes at most out.size() of them; returns how many, and counts the
 /// evaluations of F̂ in `evaluations`.
-int possible_roots(PolynomialEnclosure f, double t0, double t1, std::span<const double> extrema,
+int possible_roots(const PolynomialEnclosure& f, double t0, double t1, std::span<const double> extrema,
                    std::span<double> out, int& evaluations);
 
 }  // namespace zeroset

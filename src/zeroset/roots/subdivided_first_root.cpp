@@ -51,7 +51,7 @@ double control_polygon_crossing(const double* b, int n, double a, double end) {
 }
 
 /// The scan of polynomial_enclosure.hpp over F̂'s extrema in [a, b].
-PossibleRoot scan(PolynomialEnclosure f, double a, double b) {
+PossibleRoot scan(const PolynomialEnclosure& f, double a, double b) {
     std::array<double, max_polynomial_degree> extrema{};
     const PolynomialRoots e = fast_polynomial_extrema(f.value, a, b, extrema);
     PossibleRoot r =
@@ -62,7 +62,7 @@ PossibleRoot scan(PolynomialEnclosure f, double a, double b) {
 
 /// The subdivision with coefficient arrays of `Capacity` (> the degree).
 template <int Capacity>
-PossibleRoot subdivide(PolynomialEnclosure f, double t0, double t1, const PolynomialScratch& bernstein,
+PossibleRoot subdivide(const PolynomialEnclosure& f, double t0, double t1, const PolynomialScratch& bernstein,
                        double magnitude, double tolerance, PossibleRoot r) {
     struct Piece {
         double a, b;
@@ -142,7 +142,7 @@ PossibleRoot subdivide(PolynomialEnclosure f, double t0, double t1, const Polyno
 
 }  // namespace
 
-PossibleRoot first_possible_root_subdividing(PolynomialEnclosure f, double t0, double t1, double tolerance) {
+PossibleRoot first_possible_root_subdividing(const PolynomialEnclosure& f, double t0, double t1, double tolerance) {
     PossibleRoot r;
     const int n = static_cast<int>(f.value.size()) - 1;
     const PolynomialSample start = sample_polynomial(f.value, t0);

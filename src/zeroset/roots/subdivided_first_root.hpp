@@ -34,6 +34,6 @@ namespace zeroset {
 /// conversions, splits and samples as evaluations. A crossing's Newton
 /// stops once a step is within `tolerance` (and shrinking), after one more
 /// step: with 0, when the steps reach F̂'s rounding noise.
-PossibleRoot first_possible_root_subdividing(PolynomialEnclosure f, double t0, double t1, double tolerance = 0.0);
+PossibleRoot first_possible_root_subdividing(const PolynomialEnclosure& f, double t0, double t1, double tolerance = 0.0);
 
 }  // namespace zeroset
