@@ -200,17 +200,6 @@ KernelArgument kernel_argument(const KernelOnRay& k, double t_c, double tau_a, d
             {2.0 * (g_lo - 4.0 * unit_roundoff * std::abs(g_lo)), 2.0 * (g_hi + 4.0 * unit_roundoff * std::abs(g_hi))}};
 }
 
-std::optional<ReachOnRay> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach) {
-    const double a2 = dot(qd, qd);
-    if (!(a2 > 0.0)) return std::nullopt;
-    const double nearest = -dot(q0, qd) / a2;
-    const Vec3d closest = q0 + nearest * qd;
-    const double u_min = dot(closest, closest);
-    if (!(u_min <= reach)) return std::nullopt;
-    const double half = std::sqrt((reach - u_min) / a2) * (1.0 + 1e-12) + 1e-12 * std::abs(nearest);
-    return ReachOnRay{{nearest - half, nearest + half}, nearest, u_min};
-}
-
 double mapping_error(const Mat4& m, const Vec3d& v, bool point) {
     return 4.0 * unit_roundoff * mapped_magnitude(m, v, point);
 }

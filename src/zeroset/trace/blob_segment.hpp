@@ -65,7 +65,18 @@ struct ReachOnRay {
     double nearest;
     double u_min;
 };
-std::optional<ReachOnRay> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach);
+/// Inline: returned through memory, the result was read back in wider
+/// loads than it was written with, a stall on every component a ray meets.
+inline std::optional<ReachOnRay> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach) {
+    const double a2 = dot(qd, qd);
+    if (!(a2 > 0.0)) return std::nullopt;
+    const double nearest = -dot(q0, qd) / a2;
+    const Vec3d closest = q0 + nearest * qd;
+    const double u_min = dot(closest, closest);
+    if (!(u_min <= reach)) return std::nullopt;
+    const double half = std::sqrt((reach - u_min) / a2) * (1.0 + 1e-12) + 1e-12 * std::abs(nearest);
+    return ReachOnRay{{nearest - half, nearest + half}, nearest, u_min};
+}
 
 /// A bound on the rounding of each coordinate of m·v (m·(v, 1) for a point).
 double mapping_error(const Mat4& m, const Vec3d& v, bool point);
