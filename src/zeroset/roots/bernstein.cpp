@@ -69,6 +69,39 @@ constexpr std::array<FixedConversion, 9> fixed_conversions = {
     convert_fixed<5>, convert_fixed<6>, convert_fixed<7>, convert_fixed<8>,
 };
 
+/// de Casteljau's triangle at the middle for a degree N known at compile
+/// time: unrolled, every value in a register. The generic loop kept the
+/// triangle's rows in memory, and each row's paired loads read the stores
+/// of the row before at another offset, which the store buffer cannot
+/// forward (a stall per row).
+template <int N>
+[[gnu::always_inline]] inline void split_fixed(const double* b, double* left, double* right) {
+    // The first row straight from b: copied first, b went through the stack.
+    double w[N];
+    left[0] = b[0];
+    right[N] = b[N];
+    for (int i = 0; i < N; ++i) w[i] = 0.5 * (b[i] + b[i + 1]);
+    left[1] = w[0];
+    right[N - 1] = w[N - 1];
+    for (int r = 2; r <= N; ++r) {
+        for (int i = 0; i <= N - r; ++i) w[i] = 0.5 * (w[i] + w[i + 1]);
+        left[r] = w[0];
+        right[N - r] = w[N - r];
+    }
+}
+
+[[gnu::always_inline]] inline void split_any(const double* b, int n, double* left, double* right) {
+    PolynomialScratch w{};  // zeroed: GCC cannot see that n ≥ 9 here, and warns
+    for (int i = 0; i <= n; ++i) w[at(i)] = b[i];
+    left[0] = w[0];
+    right[n] = w[at(n)];
+    for (int r = 1; r <= n; ++r) {
+        for (int i = 0; i <= n - r; ++i) w[at(i)] = 0.5 * (w[at(i)] + w[at(i) + 1]);
+        left[r] = w[0];
+        right[n - r] = w[at(n - r)];
+    }
+}
+
 }  // namespace
 
 PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, double t1, double& magnitude) {
@@ -78,6 +111,25 @@ PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, doub
     else
         convert<max_polynomial_degree + 1>(p.data(), n, t0, t1, b.data(), magnitude);
     return b;
+}
+
+// Not vectorised: GCC's vectorisers pack the triangle's neighbours
+// into pairs through the stack (stores of one row, unaligned loads of the
+// next), the very stall the unrolled form is there to avoid; in scalars
+// the triangle stays in registers. Degrees up to 8 run unrolled (the same
+// operations in the same order as the generic loop, so the same bits).
+[[gnu::optimize("no-tree-vectorize")]] void split_bernstein(const double* b, int n, double* left, double* right) {
+    switch (n) {
+        case 1: split_fixed<1>(b, left, right); return;
+        case 2: split_fixed<2>(b, left, right); return;
+        case 3: split_fixed<3>(b, left, right); return;
+        case 4: split_fixed<4>(b, left, right); return;
+        case 5: split_fixed<5>(b, left, right); return;
+        case 6: split_fixed<6>(b, left, right); return;
+        case 7: split_fixed<7>(b, left, right); return;
+        case 8: split_fixed<8>(b, left, right); return;
+        default: split_any(b, n, left, right); return;
+    }
 }
 
 }  // namespace zeroset
