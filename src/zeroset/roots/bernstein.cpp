@@ -118,7 +118,12 @@ PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, doub
 // next), the very stall the unrolled form is there to avoid; in scalars
 // the triangle stays in registers. Degrees up to 8 run unrolled (the same
 // operations in the same order as the generic loop, so the same bits).
-[[gnu::optimize("no-tree-vectorize")]] void split_bernstein(const double* b, int n, double* left, double* right) {
+#if defined(__GNUC__) && !defined(__clang__)
+#define ZEROSET_SCALAR_ONLY [[gnu::optimize("no-tree-vectorize")]]
+#else
+#define ZEROSET_SCALAR_ONLY  // clang has no per-function optimize attribute
+#endif
+ZEROSET_SCALAR_ONLY void split_bernstein(const double* b, int n, double* left, double* right) {
     switch (n) {
         case 1: split_fixed<1>(b, left, right); return;
         case 2: split_fixed<2>(b, left, right); return;
@@ -131,5 +136,6 @@ PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, doub
         default: split_any(b, n, left, right); return;
     }
 }
+#undef ZEROSET_SCALAR_ONLY
 
 }  // namespace zeroset
