@@ -1,6 +1,7 @@
 // The conversion to the Bernstein basis (roots/bernstein.hpp): its
 // coefficients reproduce the polynomial, within the rounding bound it
-// states, on the unrolled degrees (1 to 8) and the general loop alike.
+// states, on the unrolled degrees (1 to 8) and the general loop alike; and
+// the split at the middle gives de Casteljau's bits, in place or not.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -69,6 +70,45 @@ TEST(Bernstein, TheCoefficientsAreThePolynomialsWithinTheirStatedRounding) {
                 EXPECT_NEAR(static_cast<double>(de_casteljau(b, n, u)), static_cast<double>(value), 4.0 * noise + 1e-300)
                     << "degree " << n << " at u = " << static_cast<double>(u);
             }
+        }
+    }
+}
+
+/// de Casteljau at the middle, as the textbook writes it.
+void reference_split(const std::vector<double>& b, int n, std::vector<double>& left, std::vector<double>& right) {
+    std::vector<double> w = b;
+    left.assign(b.size(), 0.0);
+    right.assign(b.size(), 0.0);
+    left[0] = w[0];
+    right[static_cast<std::size_t>(n)] = w[static_cast<std::size_t>(n)];
+    for (int r = 1; r <= n; ++r) {
+        for (int i = 0; i <= n - r; ++i)
+            w[static_cast<std::size_t>(i)] = 0.5 * (w[static_cast<std::size_t>(i)] + w[static_cast<std::size_t>(i) + 1]);
+        left[static_cast<std::size_t>(r)] = w[0];
+        right[static_cast<std::size_t>(n - r)] = w[static_cast<std::size_t>(n - r)];
+    }
+}
+
+TEST(Bernstein, TheSplitGivesDeCasteljausBitsOnEveryDegreeAndInPlace) {
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> coefficient(-5.0, 5.0);
+    for (int n = 1; n <= 12; ++n) {  // 1–8 unrolled, 9–12 by the loop
+        for (int trial = 0; trial < 100; ++trial) {
+            std::vector<double> b(static_cast<std::size_t>(n) + 1);
+            for (double& c : b) c = coefficient(random);
+            std::vector<double> want_left, want_right;
+            reference_split(b, n, want_left, want_right);
+            std::vector<double> left(b.size()), right(b.size());
+            split_bernstein(b.data(), n, left.data(), right.data());
+            EXPECT_EQ(left, want_left) << "degree " << n;
+            EXPECT_EQ(right, want_right) << "degree " << n;
+            // Either half may take b's place (the subdivision splits so).
+            std::vector<double> in_place = b;
+            split_bernstein(in_place.data(), n, left.data(), in_place.data());
+            EXPECT_EQ(in_place, want_right) << "degree " << n << ", right half in place";
+            in_place = b;
+            split_bernstein(in_place.data(), n, in_place.data(), right.data());
+            EXPECT_EQ(in_place, want_left) << "degree " << n << ", left half in place";
         }
     }
 }
