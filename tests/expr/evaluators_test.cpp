@@ -1,7 +1,8 @@
 // Every op of the op table through every evaluator — one suite run against all
 // number types, as fidget does: the plain evaluators must agree with each
 // other, Dual and Jet with finite differences, and the interval evaluators
-// must enclose the sampled values, gradients and ray derivatives.
+// must enclose the sampled values, gradients and ray derivatives (the batch
+// evaluator's backends: batch_evaluator_test.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,8 +16,7 @@
 #include <string>
 #include <vector>
 
-#include <hwy/targets.h>
-
+#include "evaluator_cases.hpp"
 #include "zeroset/expr/batch_evaluator.hpp"
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/expr/lipschitz.hpp"
@@ -26,83 +26,7 @@
 namespace zeroset {
 namespace {
 
-const Expr X = var_x(), Y = var_y(), Z = var_z();
-// Affine functions of the coordinates; P stays in [1.25, 2.75] over [-1, 1]³.
-const Expr L1 = 0.7 * X - 0.4 * Y + 0.3 * Z + 0.2;
-const Expr L2 = -0.5 * X + 0.9 * Y + 0.6 * Z - 0.1;
-const Expr P = 2.0 + 0.3 * X + 0.2 * Y - 0.25 * Z;
-
-struct Case {
-    std::string name;
-    Expr f;
-    double float_tolerance = 2e-5;  // relative, for the float evaluators against double
-};
-
-std::vector<Case> cases() {
-    return {
-        {"add", L1 + L2},
-        {"sub", L1 - L2},
-        {"mul", L1 * L2},
-        {"div", L1 / P},
-        {"div, pole inside", L1 / L2, 1e-1},
-        {"neg", -L1},
-        {"square", square(L1)},
-        {"sqrt", sqrt(P)},
-        {"sqrt, partly undefined", sqrt(L1), 1e-2},
-        {"abs", abs(L1)},
-        {"exp", exp(2.0 * L1)},
-        {"log", log(P)},
-        {"log, partly undefined", log(L1), 1e-2},
-        {"sin", sin(3.0 * L1)},
-        {"cos", cos(3.0 * L1)},
-        {"powi 3", powi(L1, 3)},
-        {"powi 4", powi(L1, 4)},
-        {"powi 5", powi(L1, 5)},
-        {"powi -1", powi(P, -1)},
-        {"powi -2", powi(P, -2)},
-        {"powi -3", powi(L1, -3), 1e-1},
-        {"pow 2.5", pow(P, Expr(2.5))},
-        {"pow -0.5", pow(P, Expr(-0.5))},
-        {"pow 0.5, partly undefined", pow(L1, Expr(0.5)), 1e-2},
-        // A .vm `pow` keeps an integral exponent as Pow (the builder would make powi).
-        {"pow 3 as Pow", Expr::make(Op::Pow, L1, Expr(3.0))},
-        {"pow 1031", pow(0.02 * L1 - 1.0, Expr(1031.0)), 1e-3},
-        {"pow variable exponent", pow(P, L2)},
-        {"pow variable, partly undefined", pow(L1, L2), 1e-2},
-        {"tan", tan(0.8 * L1)},
-        {"tan, poles inside", tan(1.5 * L1), 0.5},
-        {"atan", atan(3.0 * L1)},
-        {"atan2", atan2(L1, P)},
-        {"atan2, cut inside", atan2(L1, L2), 1e-3},
-        {"floor", floor(2.0 * L1)},
-        {"hypot", hypot(L1, L2)},
-        {"log-sum-exp", log_sum_exp(3.0 * L1, L2)},
-        {"min", min(L1, L2)},
-        {"max", max(L1, L2)},
-        // Composites: shared subexpressions, CSG, nesting.
-        {"sphere", sqrt(square(X) + square(Y) + square(Z)) - 0.5},
-        {"csg", max(min(sqrt(square(X - 0.3) + square(Y) + square(Z)) - 0.6, abs(X) + abs(Y) + abs(Z) - 0.8),
-                    -(sqrt(square(X) + square(Y + 0.2) + square(Z)) - 0.3))},
-        {"blend", 1.0 - exp(-square(X - 0.4) - square(Y) - square(Z)) - exp(-square(X + 0.4) - square(Y) - square(Z))},
-        {"nested", sin(X * Y) * cos(Z - X) + log(P) / sqrt(P) - powi(L2, 3) * exp(-square(L1))},
-        {"norm", hypot(hypot(X, Y - 0.1), Z) + 0.2 * atan2(Y, X) + 0.1 * floor(3.0 * Z)},
-    };
-}
-
-constexpr double lo_bound = -1.0, hi_bound = 1.0;  // the sample domain [-1, 1]³
-constexpr int point_count = 150;                   // not a multiple of the batch width
-
-struct Sampler {
-    std::mt19937_64 rng;
-    double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
-    Vec3d point() { return {uniform(lo_bound, hi_bound), uniform(lo_bound, hi_bound), uniform(lo_bound, hi_bound)}; }
-};
-
-bool close(double got, double want, double relative) {
-    if (std::isnan(want)) return std::isnan(got);
-    if (std::isinf(want)) return got == want;
-    return std::abs(got - want) <= relative * (1.0 + std::abs(want));
-}
+using namespace evaluator_cases;
 
 /// How far p is from a kink or a jump, where finite differences do not
 /// apply: the smallest |a| of abs, |a − b| of min/max, distance to an
@@ -139,190 +63,6 @@ TEST(Evaluators, CasesCoverTheWholeOpTable) {
     seen.insert({Op::VarX, Op::VarY, Op::VarZ});  // the slots 0..2
     for (int i = 0; i < op_count; ++i)
         EXPECT_TRUE(seen.contains(static_cast<Op>(i))) << "no case uses " << op_name(static_cast<Op>(i));
-}
-
-/// The batch evaluator at every SIMD level Highway compiled that this CPU
-/// runs (expr/batch_lanes.hpp), each against the scalar evaluators.
-class BatchBackends : public ::testing::TestWithParam<std::int64_t> {
-protected:
-    void SetUp() override { hwy::SetSupportedTargetsForTest(GetParam()); }
-    void TearDown() override { hwy::SetSupportedTargetsForTest(0); }  // back to the CPU's own
-};
-
-INSTANTIATE_TEST_SUITE_P(Targets, BatchBackends, ::testing::ValuesIn(hwy::SupportedAndGeneratedTargets()),
-                         [](const ::testing::TestParamInfo<std::int64_t>& target) {
-                             return std::string(hwy::TargetName(target.param));
-                         });
-
-TEST_P(BatchBackends, RunAtTheirTarget) { EXPECT_EQ(batch_simd_target(), hwy::TargetName(GetParam())); }
-
-TEST_P(BatchBackends, PlainAndBatchAgree) {
-    Sampler sampler{std::mt19937_64(1)};
-    for (const Case& c : cases()) {
-        SCOPED_TRACE(c.name);
-        const Tape tape(c.f);
-        Evaluator<double> eval(tape);
-        Evaluator<float> eval_f(tape);
-        BatchEvaluator<double> batch(tape);
-        BatchEvaluator<float> batch_f(tape);
-        std::vector<double> x(point_count), y(point_count), z(point_count), out(point_count);
-        std::vector<float> xf(point_count), yf(point_count), zf(point_count), out_f(point_count);
-        for (int i = 0; i < point_count; ++i) {
-            const Vec3d p = sampler.point();
-            xf[i] = static_cast<float>(p.x);
-            yf[i] = static_cast<float>(p.y);
-            zf[i] = static_cast<float>(p.z);
-            // The double evaluators see the very same (float) coordinates.
-            x[i] = xf[i];
-            y[i] = yf[i];
-            z[i] = zf[i];
-        }
-        batch.evaluate(x, y, z, out);
-        batch_f.evaluate(xf, yf, zf, out_f);
-        int defined = 0;
-        for (int i = 0; i < point_count; ++i) {
-            const double d = eval(x[i], y[i], z[i]);
-            const float f = eval_f(xf[i], yf[i], zf[i]);
-            ASSERT_TRUE(close(out[i], d, 1e-15)) << "batch<double> " << out[i] << " vs " << d << " at point " << i;
-            ASSERT_TRUE(close(out_f[i], f, 1e-6)) << "batch<float> " << out_f[i] << " vs " << f << " at point " << i;
-            if (std::isnan(d)) continue;
-            ++defined;
-            ASSERT_TRUE(close(f, d, c.float_tolerance))
-                << "float " << f << " vs double " << d << " at (" << x[i] << ", " << y[i] << ", " << z[i] << ")";
-        }
-        EXPECT_GT(defined, point_count / 4);
-    }
-}
-
-/// Constants are broadcast, never spread over lanes, except for the ops
-/// that read lanes one by one: a constant on either side of every binary
-/// op, into the vector functions' fallbacks, and a tape that is a constant.
-TEST_P(BatchBackends, ConstantOperandsOnEitherSide) {
-    const Expr c(0.375);
-    const std::vector<std::pair<std::string, Expr>> functions = {
-        {"c + x", c + X},       {"x - c", X - c},           {"c - x", c - X},
-        {"c / x", c / X},       {"x / c", X / c},           {"min(c, x)", min(c, X)},
-        {"max(x, c)", max(X, c)}, {"hypot(x, c)", hypot(X, c)}, {"hypot(c, y)", hypot(c, Y)},
-        {"lse(c, x)", log_sum_exp(c, 3.0 * X)}, {"lse(x, c)", log_sum_exp(3.0 * X, c)},
-        {"atan2(c, x)", atan2(c, X)}, {"pow(c, x)", pow(c, X)}, {"pow(x + 2, c)", pow(X + 2.0, c)},
-        {"a constant", Expr(-1.5)},
-    };
-    std::vector<double> x(point_count), y(point_count), z(point_count), out(point_count);
-    std::vector<float> xf(point_count), yf(point_count), zf(point_count), out_f(point_count);
-    for (int i = 0; i < point_count; ++i) {
-        xf[i] = static_cast<float>(-1.0 + 2.0 * i / point_count);
-        yf[i] = static_cast<float>(0.5 - 1.0 * i / point_count);
-        zf[i] = 0.25f;
-        x[i] = xf[i];
-        y[i] = yf[i];
-        z[i] = zf[i];
-    }
-    for (const auto& [name, f] : functions) {
-        SCOPED_TRACE(name);
-        const Tape tape(f);
-        Evaluator<double> eval(tape);
-        Evaluator<float> eval_f(tape);
-        BatchEvaluator<double> batch(tape);
-        BatchEvaluator<float> batch_f(tape);
-        batch.evaluate(x, y, z, out);
-        batch_f.evaluate(xf, yf, zf, out_f);
-        for (int i = 0; i < point_count; ++i) {
-            ASSERT_TRUE(close(out[i], eval(x[i], y[i], z[i]), 1e-15)) << "double at point " << i;
-            ASSERT_TRUE(close(out_f[i], eval_f(xf[i], yf[i], zf[i]), 1e-6)) << "float at point " << i;
-        }
-    }
-}
-
-/// Lanes outside the vector functions' ranges, NaN and ±∞ behave as the
-/// scalar functions do: overflow to ∞, log of 0 and of negatives, huge
-/// arguments of sin and cos, NaN through min and max from either side.
-TEST_P(BatchBackends, EdgeValuesMatchTheScalarFunctions) {
-    const std::vector<double> edges = {0.0, -0.0, 1e-320, -1e-320, 1e-40, 1.0, -1.0, 88.0, 89.0, 100.0, 200.0,
-                                       710.0, 800.0, -800.0, 38999.0, 39001.0, -1e6, 1e30, -1e30,
-                                       std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-                                       std::numeric_limits<double>::quiet_NaN()};
-    const std::vector<std::pair<std::string, Expr>> ops = {
-        {"exp", exp(X)}, {"log", log(X)}, {"sin", sin(X)}, {"cos", cos(X)}, {"atan", atan(X)}, {"sqrt", sqrt(X)},
-        {"min", min(X, Y)}, {"max", max(X, Y)}, {"min swapped", min(Y, X)}, {"max swapped", max(Y, X)},
-        {"div", X / Y}, {"powi -3", powi(X, -3)}, {"floor", floor(X)}, {"abs", abs(X)},
-        {"log-sum-exp", log_sum_exp(X, Y)}, {"log-sum-exp swapped", log_sum_exp(Y, X)}, {"hypot", hypot(X, Y)},
-        {"hypot of tiny", hypot(X * 1e-300, Y * 1e-300)}};
-    for (const auto& [name, f] : ops) {
-        SCOPED_TRACE(name);
-        const Tape tape(f);
-        Evaluator<double> eval(tape);
-        Evaluator<float> eval_f(tape);
-        BatchEvaluator<double> batch(tape);
-        BatchEvaluator<float> batch_f(tape);
-        std::vector<double> x, y, z, out;
-        for (const double a : edges) {
-            for (const double b : {0.5, -2.0, std::numeric_limits<double>::quiet_NaN()}) {
-                x.push_back(a);
-                y.push_back(b);
-                z.push_back(0.0);
-            }
-        }
-        out.resize(x.size());
-        std::vector<float> xf(x.begin(), x.end()), yf(y.begin(), y.end()), zf(z.begin(), z.end()), out_f(x.size());
-        batch.evaluate(x, y, z, out);
-        batch_f.evaluate(xf, yf, zf, out_f);
-        for (std::size_t i = 0; i < x.size(); ++i) {
-            EXPECT_TRUE(close(out[i], eval(x[i], y[i], 0.0), 1e-15))
-                << "double at " << x[i] << ", " << y[i] << ": " << out[i] << " vs " << eval(x[i], y[i], 0.0);
-            EXPECT_TRUE(close(out_f[i], eval_f(xf[i], yf[i], 0.0f), 1e-6))
-                << "float at " << xf[i] << ", " << yf[i] << ": " << out_f[i] << " vs " << eval_f(xf[i], yf[i], 0.0f);
-        }
-    }
-}
-
-TEST(Evaluators, BatchHandlesEmptyAndPartialBatches) {
-    const Tape tape(sin(X) * Y + Z);
-    BatchEvaluator<double> batch(tape);
-    Evaluator<double> eval(tape);
-    std::vector<double> none;
-    batch.evaluate(none, none, none, none);  // nothing to do, nothing touched
-    for (const std::size_t n : {std::size_t{1}, BatchEvaluator<double>::lanes, BatchEvaluator<double>::lanes + 1}) {
-        std::vector<double> x(n), y(n), z(n), out(n, -1.0);
-        for (std::size_t i = 0; i < n; ++i) {
-            x[i] = 0.01 * static_cast<double>(i);
-            y[i] = 2.0;
-            z[i] = -static_cast<double>(i);
-        }
-        batch.evaluate(x, y, z, out);
-        for (std::size_t i = 0; i < n; ++i) EXPECT_DOUBLE_EQ(out[i], eval(x[i], y[i], z[i])) << "n = " << n;
-    }
-}
-
-TEST(Evaluators, BatchRebindsBetweenPrunedTapesKeepEveryConstantRight) {
-    // Two balls pruned apart: each pruned tape has its own constants, in
-    // slots the other uses for working values or other constants. Going back
-    // and forth, a rebind refills only what changed; the values must stay
-    // those of a fresh evaluator every time.
-    const auto ball = [](double cx, double r) { return hypot(hypot(X - cx, Y), Z) - r; };
-    const Tape full(min(ball(-5.0, 1.0), 3.0 * ball(5.0, 2.0)));
-    TapePruner pruner(full);
-    const Box3 left{{-6, -1, -1}, {-4, 1, 1}}, right{{4, -1, -1}, {6, 1, 1}};
-    Tape near_left, near_right;
-    pruner.prune(full, left, near_left);
-    pruner.prune(full, right, near_right);
-    ASSERT_LT(near_left.clauses().size(), full.clauses().size());
-    ASSERT_LT(near_right.clauses().size(), full.clauses().size());
-    BatchEvaluator<float> batch(full);
-    Evaluator<double> reference(full);
-    std::vector<float> x(7), y(7), z(7), out(7);
-    for (int round = 0; round < 6; ++round) {
-        // Round 4 takes the full tape, whose constants the pruned tapes' working values overwrote.
-        const bool on_left = round % 2 == 1;
-        batch.rebind(round == 4 ? full : on_left ? near_left : near_right);
-        for (std::size_t i = 0; i < x.size(); ++i) {
-            x[i] = static_cast<float>((on_left ? -5.0 : 5.0) + 0.1 * static_cast<double>(i));
-            y[i] = 0.25f;
-            z[i] = -0.5f;
-        }
-        batch.evaluate(x, y, z, out);
-        for (std::size_t i = 0; i < x.size(); ++i)
-            EXPECT_NEAR(out[i], reference(x[i], y[i], z[i]), 1e-5) << "round " << round << ", point " << i;
-    }
 }
 
 TEST(Evaluators, GradientMatchesFiniteDifferences) {
