@@ -39,7 +39,9 @@ public:
     Segment pop() { return items_[--size_]; }
 
 private:
-    std::array<Segment, max_depth + 2> items_{};
+    // Not zeroed: only pushed entries are read, and zeroing 3 KB on every
+    // construction was a fifth of a Gaussian blob's interval isolation.
+    std::array<Segment, max_depth + 2> items_;
     std::size_t size_ = 0;
 };
 
