@@ -117,6 +117,57 @@ TEST_P(BatchBackends, ConstantOperandsOnEitherSide) {
     }
 }
 
+/// Constants reach ops the expression builder would have folded only in
+/// pruned tapes: a unary op or a vector function of a constant, two
+/// constants into one op. Each function below prunes, over its box, to such
+/// a tape; the batch over it (bound by rebind, as the slice binds its
+/// leaves) must give the scalar evaluator's values.
+TEST_P(BatchBackends, PrunedTapesFeedConstantsToEveryKindOfOp) {
+    const Box3 box{{1.0, 1.0, -1.0}, {2.0, 2.0, 1.0}};  // x, y in [1, 2]
+    const std::vector<std::pair<std::string, Expr>> functions = {
+        {"exp of a constant", exp(min(X, Expr(-1.0))) + Z},
+        {"sin of a constant", sin(max(Y, Expr(3.0))) * Z},
+        {"log of a constant", log(max(X, Expr(5.0))) - Z},
+        {"atan of a constant", atan(min(Y, Expr(0.5))) + Z},
+        {"neg of a constant", -min(X, Expr(0.25)) + Z},
+        {"powi of a constant", powi(min(Y, Expr(0.5)), 3) + Z},
+        {"tan of a constant", tan(min(X, Expr(0.5))) + Z},
+        {"two constants", min(X, Expr(0.5)) * max(Y, Expr(4.0)) + Z},
+        {"hypot of two constants", hypot(min(X, Expr(0.5)), max(Y, Expr(4.0))) + Z},
+        {"only a constant left", min(X, Expr(-3.0))},
+    };
+    std::vector<double> x(point_count), y(point_count), z(point_count), out(point_count);
+    std::vector<float> xf(point_count), yf(point_count), zf(point_count), out_f(point_count);
+    for (int i = 0; i < point_count; ++i) {
+        xf[i] = static_cast<float>(1.0 + 1.0 * i / point_count);
+        yf[i] = static_cast<float>(2.0 - 1.0 * i / point_count);
+        zf[i] = static_cast<float>(-1.0 + 2.0 * i / point_count);
+        x[i] = xf[i];
+        y[i] = yf[i];
+        z[i] = zf[i];
+    }
+    BatchEvaluator<double> batch;  // bound to each pruned tape in turn
+    BatchEvaluator<float> batch_f;
+    for (const auto& [name, f] : functions) {
+        SCOPED_TRACE(name);
+        const Tape full(f);
+        TapePruner pruner(full);
+        Tape pruned;
+        pruner.prune(full, box, pruned);
+        ASSERT_LT(pruned.clauses().size(), full.clauses().size());
+        Evaluator<double> eval(pruned);
+        Evaluator<float> eval_f(pruned);
+        batch.rebind(pruned);
+        batch_f.rebind(pruned);
+        batch.evaluate(x, y, z, out);
+        batch_f.evaluate(xf, yf, zf, out_f);
+        for (int i = 0; i < point_count; ++i) {
+            ASSERT_TRUE(close(out[i], eval(x[i], y[i], z[i]), 1e-15)) << "double at point " << i;
+            ASSERT_TRUE(close(out_f[i], eval_f(xf[i], yf[i], zf[i]), 1e-6)) << "float at point " << i;
+        }
+    }
+}
+
 /// Lanes outside the vector functions' ranges, NaN and ±∞ behave as the
 /// scalar functions do: overflow to ∞, log of 0 and of negatives, huge
 /// arguments of sin and cos, NaN through min and max from either side.

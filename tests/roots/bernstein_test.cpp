@@ -4,6 +4,7 @@
 // the split at the middle gives de Casteljau's bits, in place or not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -104,11 +105,15 @@ TEST(Bernstein, TheSplitGivesDeCasteljausBitsOnEveryDegreeAndInPlace) {
             EXPECT_EQ(right, want_right) << "degree " << n;
             // Either half may take b's place (the subdivision splits so).
             std::vector<double> in_place = b;
+            std::fill(left.begin(), left.end(), 0.0);
             split_bernstein(in_place.data(), n, left.data(), in_place.data());
             EXPECT_EQ(in_place, want_right) << "degree " << n << ", right half in place";
+            EXPECT_EQ(left, want_left) << "degree " << n << ", left half beside it";
             in_place = b;
+            std::fill(right.begin(), right.end(), 0.0);
             split_bernstein(in_place.data(), n, in_place.data(), right.data());
             EXPECT_EQ(in_place, want_left) << "degree " << n << ", left half in place";
+            EXPECT_EQ(right, want_right) << "degree " << n << ", right half beside it";
         }
     }
 }

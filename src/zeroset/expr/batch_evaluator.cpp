@@ -36,6 +36,7 @@ void BatchEvaluator<F>::load_constants() {
 template <class F>
 void BatchEvaluator<F>::evaluate(std::span<const F> x, std::span<const F> y, std::span<const F> z,
                                  std::span<F> out) {
+    if (out.empty()) return;
     const Inputs in = inputs();
     for (std::size_t start = 0; start < out.size(); start += lanes) {
         const std::size_t count = std::min(lanes, out.size() - start);

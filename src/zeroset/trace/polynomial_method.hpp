@@ -49,7 +49,7 @@ private:
                    TraceCounters& counters) const;
 
     /// F̂ from the program's last run, with its coefficients' radii.
-    PolynomialEnclosure current_enclosure();
+    inline PolynomialEnclosure current_enclosure();  // defined, and used, in polynomial_method.cpp only
 
     RootFinderSettings settings_;
     RayPolynomialProgram program_;
