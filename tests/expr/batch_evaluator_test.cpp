@@ -78,6 +78,41 @@ TEST_P(BatchBackends, PlainAndBatchAgree) {
     }
 }
 
+/// Points evenly along the segment from `from` to `to`, in float, and the
+/// same floats as doubles (the double evaluators see the very same points).
+struct LinePoints {
+    std::vector<double> x, y, z;
+    std::vector<float> xf, yf, zf;
+};
+LinePoints points_along(const Vec3d& from, const Vec3d& to) {
+    LinePoints p;
+    for (int i = 0; i < point_count; ++i) {
+        const Vec3d q = from + (to - from) * (static_cast<double>(i) / point_count);
+        p.xf.push_back(static_cast<float>(q.x));
+        p.yf.push_back(static_cast<float>(q.y));
+        p.zf.push_back(static_cast<float>(q.z));
+        p.x.push_back(p.xf.back());
+        p.y.push_back(p.yf.back());
+        p.z.push_back(p.zf.back());
+    }
+    return p;
+}
+
+/// The batch evaluators, bound to `tape`, give the scalar evaluators' values at the points.
+void expect_batches_match_scalar(BatchEvaluator<double>& batch, BatchEvaluator<float>& batch_f, const Tape& tape,
+                                 const LinePoints& p) {
+    Evaluator<double> eval(tape);
+    Evaluator<float> eval_f(tape);
+    std::vector<double> out(p.x.size());
+    std::vector<float> out_f(p.x.size());
+    batch.evaluate(p.x, p.y, p.z, out);
+    batch_f.evaluate(p.xf, p.yf, p.zf, out_f);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        ASSERT_TRUE(close(out[i], eval(p.x[i], p.y[i], p.z[i]), 1e-15)) << "double at point " << i;
+        ASSERT_TRUE(close(out_f[i], eval_f(p.xf[i], p.yf[i], p.zf[i]), 1e-6)) << "float at point " << i;
+    }
+}
+
 /// Constants are broadcast, never spread over lanes, except for the ops
 /// that read lanes one by one: a constant on either side of every binary
 /// op, into the vector functions' fallbacks, and a tape that is a constant.
@@ -91,29 +126,13 @@ TEST_P(BatchBackends, ConstantOperandsOnEitherSide) {
         {"atan2(c, x)", atan2(c, X)}, {"pow(c, x)", pow(c, X)}, {"pow(x + 2, c)", pow(X + 2.0, c)},
         {"a constant", Expr(-1.5)},
     };
-    std::vector<double> x(point_count), y(point_count), z(point_count), out(point_count);
-    std::vector<float> xf(point_count), yf(point_count), zf(point_count), out_f(point_count);
-    for (int i = 0; i < point_count; ++i) {
-        xf[i] = static_cast<float>(-1.0 + 2.0 * i / point_count);
-        yf[i] = static_cast<float>(0.5 - 1.0 * i / point_count);
-        zf[i] = 0.25f;
-        x[i] = xf[i];
-        y[i] = yf[i];
-        z[i] = zf[i];
-    }
+    const LinePoints points = points_along({-1.0, 0.5, 0.25}, {1.0, -0.5, 0.25});
     for (const auto& [name, f] : functions) {
         SCOPED_TRACE(name);
         const Tape tape(f);
-        Evaluator<double> eval(tape);
-        Evaluator<float> eval_f(tape);
         BatchEvaluator<double> batch(tape);
         BatchEvaluator<float> batch_f(tape);
-        batch.evaluate(x, y, z, out);
-        batch_f.evaluate(xf, yf, zf, out_f);
-        for (int i = 0; i < point_count; ++i) {
-            ASSERT_TRUE(close(out[i], eval(x[i], y[i], z[i]), 1e-15)) << "double at point " << i;
-            ASSERT_TRUE(close(out_f[i], eval_f(xf[i], yf[i], zf[i]), 1e-6)) << "float at point " << i;
-        }
+        ASSERT_NO_FATAL_FAILURE(expect_batches_match_scalar(batch, batch_f, tape, points));
     }
 }
 
@@ -136,16 +155,7 @@ TEST_P(BatchBackends, PrunedTapesFeedConstantsToEveryKindOfOp) {
         {"hypot of two constants", hypot(min(X, Expr(0.5)), max(Y, Expr(4.0))) + Z},
         {"only a constant left", min(X, Expr(-3.0))},
     };
-    std::vector<double> x(point_count), y(point_count), z(point_count), out(point_count);
-    std::vector<float> xf(point_count), yf(point_count), zf(point_count), out_f(point_count);
-    for (int i = 0; i < point_count; ++i) {
-        xf[i] = static_cast<float>(1.0 + 1.0 * i / point_count);
-        yf[i] = static_cast<float>(2.0 - 1.0 * i / point_count);
-        zf[i] = static_cast<float>(-1.0 + 2.0 * i / point_count);
-        x[i] = xf[i];
-        y[i] = yf[i];
-        z[i] = zf[i];
-    }
+    const LinePoints points = points_along({1.0, 2.0, -1.0}, {2.0, 1.0, 1.0});
     BatchEvaluator<double> batch;  // bound to each pruned tape in turn
     BatchEvaluator<float> batch_f;
     for (const auto& [name, f] : functions) {
@@ -155,16 +165,9 @@ TEST_P(BatchBackends, PrunedTapesFeedConstantsToEveryKindOfOp) {
         Tape pruned;
         pruner.prune(full, box, pruned);
         ASSERT_LT(pruned.clauses().size(), full.clauses().size());
-        Evaluator<double> eval(pruned);
-        Evaluator<float> eval_f(pruned);
         batch.rebind(pruned);
         batch_f.rebind(pruned);
-        batch.evaluate(x, y, z, out);
-        batch_f.evaluate(xf, yf, zf, out_f);
-        for (int i = 0; i < point_count; ++i) {
-            ASSERT_TRUE(close(out[i], eval(x[i], y[i], z[i]), 1e-15)) << "double at point " << i;
-            ASSERT_TRUE(close(out_f[i], eval_f(xf[i], yf[i], zf[i]), 1e-6)) << "float at point " << i;
-        }
+        ASSERT_NO_FATAL_FAILURE(expect_batches_match_scalar(batch, batch_f, pruned, points));
     }
 }
 
