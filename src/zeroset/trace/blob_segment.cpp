@@ -36,6 +36,9 @@ double mapped_magnitude(const Mat4& m, const Vec3d& v, bool point) {
     return largest;
 }
 
+/// |x| + |y| + |z|: at least the length, without a square root.
+double norm1(const Vec3d& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
+
 /// The three polynomials a component contributes to a segment, in the lanes
 /// of one vector: its term K(u(τ)), the majorant with the inputs' errors, and
 /// the plain majorant. Each lane takes the steps the three would take one by
@@ -139,7 +142,9 @@ int kernel_polynomial(std::span<const double> c, double threshold, std::span<con
         const KernelOnRay& k = kernels[i];
         const Vec3d q = k.q0 + t_c * k.qd;
         // The error of q's coordinates: the ray's map, then q0 + t_c·qd.
-        const double q_error = k.q0_error + std::abs(t_c) * k.qd_error + 2.0 * unit_roundoff * (length(k.q0) + std::abs(t_c) * length(k.qd));
+        // (Sums of |coordinates| bound the lengths without a square root each.)
+        const double q_error =
+            k.q0_error + std::abs(t_c) * k.qd_error + 2.0 * unit_roundoff * (norm1(k.q0) + std::abs(t_c) * norm1(k.qd));
         const Vec3d q_mag{std::abs(q.x), std::abs(q.y), std::abs(q.z)};
         const Vec3d d_mag{std::abs(k.qd.x), std::abs(k.qd.y), std::abs(k.qd.z)};
         const Vec3d q_up = q_mag + Vec3d{q_error, q_error, q_error};
@@ -228,16 +233,17 @@ double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay
 
 double kernel_upper_bound_at(const BlobSegmentSettings& settings, const KernelOnRay& k, double t, double u) {
     if (k.strength < 0.0) return 0.0;
-    // |q| a little short by what the mapping and q0 + t·qd may be off
+    // |q| a little short by c, what the mapping and q0 + t·qd may be off
     // (each coordinate, so √3 of it in length), then K a little high:
-    // every kernel decreases in u. (The sums of |coordinates| bound the
-    // lengths from above without a square root each.)
-    const auto norm1 = [](const Vec3d& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); };
-    const double error =
-        k.q0_error + std::abs(t) * k.qd_error + 4.0 * unit_roundoff * (norm1(k.q0) + std::abs(t) * norm1(k.qd));
-    const double shortest = std::max(0.0, std::sqrt(u) * (1.0 - 4.0 * unit_roundoff) - 1.7321 * error);
-    return k.strength * kernel_value_at(settings.kernel, shortest * shortest * (1.0 - 4.0 * unit_roundoff), k.blobbiness) *
-           (1.0 + 4.0 * unit_roundoff);
+    // every kernel decreases in u. Without a square root: (√u − c)² ≥
+    // u − 2c·√u ≥ u − c·(u + 1), as 2√u ≤ u + 1; c is tiny, so the bound
+    // is as tight. The factors of 1 ± units cover u's own rounding and this
+    // line's. (The sums of |coordinates| bound lengths the same way.)
+    const double c =
+        1.7321 * (k.q0_error + std::abs(t) * k.qd_error + 4.0 * unit_roundoff * (norm1(k.q0) + std::abs(t) * norm1(k.qd)));
+    const double shortest_square =
+        std::max(0.0, (u * (1.0 - 8.0 * unit_roundoff) - c * (u + 1.0) * (1.0 + 4.0 * unit_roundoff)) * (1.0 - 4.0 * unit_roundoff));
+    return k.strength * kernel_value_at(settings.kernel, shortest_square, k.blobbiness) * (1.0 + 4.0 * unit_roundoff);
 }
 
 double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
