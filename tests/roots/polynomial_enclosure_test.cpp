@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -115,6 +116,58 @@ TEST(PolynomialEnclosure, TheBoundGrowsWithTheDistanceFromTheCentre) {
     EXPECT_GE(near, 1e-16);
     EXPECT_GT(far, 100.0 * 1e-16);
     EXPECT_EQ(far, enclosure_bound({value, radius}, 10.0));
+}
+
+TEST(PolynomialEnclosure, NoPolynomialWithinTheRadiusVanishesBeyondTheRootRadius) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int cut = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        // (t − r₁)…(t − r_n)·scale, its roots spread over several orders of magnitude.
+        const int degree = 1 + trial % 6;
+        std::vector<double> value{std::pow(10.0, 3.0 * u(random))};
+        double farthest = 0.0;
+        for (int k = 0; k < degree; ++k) {
+            const double root = u(random) * std::pow(10.0, 2.0 * u(random));
+            farthest = std::max(farthest, std::abs(root));
+            std::vector<double> next(value.size() + 1, 0.0);
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                next[i + 1] += value[i];
+                next[i] -= root * value[i];
+            }
+            value = next;
+        }
+        std::vector<double> radius(value.size());
+        for (std::size_t i = 0; i < value.size(); ++i) radius[i] = std::abs(value[i]) * std::pow(10.0, -12.0 + 4.0 * u(random));
+        const PolynomialEnclosure f{value, radius};
+        const double within = 1e6;
+        const double rho = root_radius(f, within);
+        if (!std::isfinite(rho)) continue;
+        ++cut;
+        EXPECT_GE(rho, farthest) << "trial " << trial;  // F̂'s own roots lie inside
+        // Beyond ρ, |F̂| exceeds what the radius allows F to differ by: no root of F.
+        for (const double beyond : {1.0, 1.001, 1.5, 4.0, 1e3}) {
+            for (const double t : {rho * beyond, -rho * beyond}) {
+                double fhat = 0.0, r = 0.0;
+                for (std::size_t i = value.size(); i-- > 0;) {
+                    fhat = fhat * t + value[i];
+                    r = r * std::abs(t) + radius[i];
+                }
+                EXPECT_GT(std::abs(fhat), r) << "trial " << trial << " t " << t;
+            }
+        }
+    }
+    EXPECT_GT(cut, 1500);  // the bound cuts nearly every such span
+}
+
+TEST(PolynomialEnclosure, TheRootRadiusCutsNothingItCannotProve) {
+    const std::vector<double> value{-4.0, 0.0, 1.0};  // roots ±2
+    EXPECT_EQ(root_radius({value, std::vector<double>{0.0, 0.0, 1.0}}, 1e6), std::numeric_limits<double>::infinity())
+        << "the leading coefficient may be 0";
+    EXPECT_EQ(root_radius({value, std::vector<double>{0.0, 0.0, 0.0}}, 3.0), std::numeric_limits<double>::infinity())
+        << "the bound (here 4) is no nearer than the span's ends";
+    EXPECT_NEAR(root_radius({value, std::vector<double>{0.0, 0.0, 0.0}}, 1e6), 4.0, 1e-6);
+    EXPECT_EQ(root_radius({std::vector<double>{3.0}, std::vector<double>{0.0}}, 1e6), std::numeric_limits<double>::infinity());
 }
 
 TEST(FastPolynomialExtrema, AreTheRootsOfTheDerivative) {

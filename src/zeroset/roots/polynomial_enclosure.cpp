@@ -73,6 +73,46 @@ double enclosure_bound(const PolynomialEnclosure& f, double t) {
     return (radius + horner * magnitude) * (1.0 + horner);
 }
 
+namespace {
+
+/// r^(1/k), by square and cube roots where they serve (pow is slower).
+double kth_root(double r, std::size_t k) {
+    switch (k) {
+        case 1: return r;
+        case 2: return std::sqrt(r);
+        case 3: return std::cbrt(r);
+        case 4: return std::sqrt(std::sqrt(r));
+        case 6: return std::sqrt(std::cbrt(r));
+        default: return std::pow(r, 1.0 / static_cast<double>(k));
+    }
+}
+
+}  // namespace
+
+double root_radius(const PolynomialEnclosure& f, double within) {
+    constexpr double none = std::numeric_limits<double>::infinity();
+    if (f.value.size() < 2 || f.value.size() > max_polynomial_degree + 1 || f.radius.size() > f.value.size()) return none;
+    const std::size_t n = f.value.size() - 1;
+    const auto radius = [&](std::size_t i) { return i < f.radius.size() ? f.radius[i] : 0.0; };
+    const double lead = std::abs(f.value[n]) - radius(n);
+    if (!(lead > 0.0) || !std::isfinite(lead)) return none;
+    // First whether any ratio reaches (within/2)^k: then the bound is at
+    // least `within` and cuts nothing, found without a division or a root.
+    const double half = 0.5 * within;
+    double power = lead;
+    for (std::size_t k = 1; k <= n; ++k) {
+        power *= half;
+        if (!(std::abs(f.value[n - k]) + radius(n - k) < power)) return none;
+    }
+    double largest = 0.0;
+    for (std::size_t k = 1; k <= n; ++k) {
+        largest = std::max(largest, kth_root((std::abs(f.value[n - k]) + radius(n - k)) / lead, k));
+    }
+    // The sum of the other terms over the leading one is below Σ 2^−k ≤
+    // 1 − 2^−n beyond the bound: room for the roots' rounding many times over.
+    return 2.0 * largest * (1.0 + 1e-9);
+}
+
 bool provably_positive(const PolynomialEnclosure& f, double t0, double t1) {
     const int n = static_cast<int>(f.value.size()) - 1;
     double magnitude = 0.0;

@@ -40,6 +40,14 @@ struct PossibleRoot {
 /// §5.1: γ₂ₙ·Σ|ĉ_i||t|^i), rounded up: |F(t) − horner(F̂, t)| ≤ this.
 double enclosure_bound(const PolynomialEnclosure& f, double t);
 
+/// A radius ρ beyond which F has no root, whatever F is within R of F̂
+/// (|t| > ρ ⇒ F(t) ≠ 0), by Fujiwara's bound: where |t| exceeds
+/// 2·((|f̂_{n−k}| + r_{n−k}) / (|f̂_n| − r_n))^{1/k} for every k, the
+/// leading term outweighs all the others with their radii. +∞ when the
+/// leading coefficient may be 0 (or F̂ is a constant) or the span given
+/// (|t| ≤ within) lies inside the bound anyway.
+double root_radius(const PolynomialEnclosure& f, double within);
+
 /// True when F > 0 throughout [t0, t1], shown by F̂'s Bernstein coefficients
 /// on it (bernstein.hpp) all exceeding the conversion's rounding plus R at
 /// the end farther from 0 (R grows with |t|). A cheap test before the

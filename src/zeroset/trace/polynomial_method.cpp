@@ -37,9 +37,23 @@ struct CentredSpan {
     double s1;
 };
 
-CentredSpan centre(Span span) {
-    const double t_c = 0.5 * span.t0 + 0.5 * span.t1;
+/// About the span's middle, or about the ray's focus when it lies in the span.
+CentredSpan centre(Span span, double focus) {
+    const double t_c = focus >= span.t0 && focus <= span.t1 ? focus : 0.5 * span.t0 + 0.5 * span.t1;
     return {t_c, std::min(span.t0 - t_c, 0.0), std::max(span.t1 - t_c, 0.0)};
+}
+
+/// For a span centred on the ray's focus (RayFunction::set_focus), cuts it
+/// to F's root radius about the focus: no root of F lies beyond, so the
+/// long span of an unbounded surface shrinks to where the surface can be.
+/// (About a span's middle the radius rarely cuts: not tried there.) False
+/// when nothing of the span is left.
+bool within_root_radius(const PolynomialEnclosure& f, CentredSpan& c, double focus) {
+    if (std::isnan(focus)) return true;
+    const double reach = root_radius(f, std::max(-c.s0, c.s1));
+    c.s0 = std::max(c.s0, -reach);
+    c.s1 = std::min(c.s1, reach);
+    return c.s0 <= c.s1;
 }
 
 /// False, with the NaN recorded in h like every method records it, when a
@@ -93,7 +107,7 @@ int PolynomialMethod::solve(std::span<const double> c, double t0, double t1, std
 
 HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {
     ++counters.point_evaluations;  // one run of the compiled program
-    const CentredSpan c = centre(span);
+    CentredSpan c = centre(span, h.focus());
     program_.evaluate(h.ray(), c.t_c);
     const std::span<const double> value = program_.value();
     if (!defined_along(h, value, c, counters)) return {std::nullopt, HitStatus::Failed};
@@ -112,6 +126,7 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
     }
 
     const PolynomialEnclosure enclosure = current_enclosure();
+    if (!within_root_radius(enclosure, c, h.focus())) return {std::nullopt, HitStatus::NoHit};
     const auto answer = [&](const PossibleRoot& hit) {
         counters.point_evaluations += static_cast<std::uint64_t>(hit.evaluations);
         return hit.found ? hit_at(hit.t) : HitResult{std::nullopt, HitStatus::NoHit};
@@ -140,7 +155,7 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
 
 double PolynomialMethod::rounding_bound(const Ray& ray, Span span) {
     if (!program_.error_known()) return std::numeric_limits<double>::infinity();
-    const CentredSpan c = centre(span);
+    const CentredSpan c = centre(span, std::numeric_limits<double>::quiet_NaN());
     program_.evaluate(ray, c.t_c);
     const PolynomialEnclosure f = current_enclosure();
     return std::max(enclosure_bound(f, c.s0), enclosure_bound(f, c.s1));
@@ -148,7 +163,7 @@ double PolynomialMethod::rounding_bound(const Ray& ray, Span span) {
 
 HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
     ++counters.point_evaluations;
-    const CentredSpan c = centre(span);
+    CentredSpan c = centre(span, h.focus());
     program_.evaluate(h.ray(), c.t_c);
     const std::span<const double> value = program_.value();
     if (!defined_along(h, value, c, counters)) return HitStatus::Failed;
@@ -161,7 +176,7 @@ HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<doub
         // within the rounding bound of 0 — so that spans built from these
         // hits (Roth CSG) miss no graze either.
         const PolynomialEnclosure enclosure = current_enclosure();
-        if (provably_positive(enclosure, c.s0, c.s1)) return HitStatus::NoHit;
+        if (!within_root_radius(enclosure, c, h.focus()) || provably_positive(enclosure, c.s0, c.s1)) return HitStatus::NoHit;
         std::array<double, RayPolynomialProgram::max_degree> extrema{};
         const int extremum_count = extrema_of(value, c.s0, c.s1, extrema, counters);
         int evaluations = 0;

@@ -17,6 +17,7 @@ RayFunction::RayFunction(const Tape& tape)
 
 void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;
+    focus_ = std::numeric_limits<double>::quiet_NaN();
     last_value_t_ = std::numeric_limits<double>::quiet_NaN();
     const double length = std::hypot(ray.dir.x, ray.dir.y, ray.dir.z);  // no underflow for tiny directions
     dir_length_ = length > 0.0 ? rounding::up(length) : 0.0;

@@ -45,6 +45,14 @@ public:
     /// Makes the full tape the base again, as set_ray() does.
     void reset_base_tape() { set_base_tape(*tape_, can_prune_); }
     [[nodiscard]] const Ray& ray() const { return ray_; }
+    /// Where along the ray the surface most likely is (NaN: nowhere in
+    /// particular), set after set_ray(): the polynomial method forms the
+    /// ray's polynomial about it, where its rounding bound is least, and
+    /// searches only within the polynomial's root radius about it (a long
+    /// span, as an unbounded sheet's behind a gate, shrinks to where the
+    /// surface can be).
+    void set_focus(double t) { focus_ = t; }
+    [[nodiscard]] double focus() const { return focus_; }
     /// |x_d|, rounded up: a length ℓ in space is ℓ / dir_length() in t.
     [[nodiscard]] double dir_length() const { return dir_length_; }
     /// A length in space as a length in t along this ray.
@@ -126,6 +134,7 @@ private:
 
     const Tape* tape_;
     Vec3d last_nan_point_{};
+    double focus_ = std::numeric_limits<double>::quiet_NaN();
     Ray ray_{};
     double dir_length_ = 1.0;
     LazilyBound<Evaluator<double>> point_;
