@@ -114,6 +114,24 @@ TEST(PovObjects, SphereSweepsAreSweeps) {
               "scene.pov:1:1: sphere_sweep: an open spline sweep needs at least 4 points");
 }
 
+TEST(PovObjects, BoundedByIsASheetsGate) {
+    // POV-Ray's bounded_by on an unbounded polynomial tests each ray: the
+    // sheet keeps its ±10⁴ bounds, the bound becomes its gate (in its own
+    // space, through the object's transform).
+    const SceneNode& sheet = first_node(import(lit + "quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 "
+                                                     "bounded_by { sphere { <0, 0, 1>, 2 } } translate <5, 0, 0> }"));
+    ASSERT_TRUE(sheet.object.gate);
+    EXPECT_EQ(sheet.object.gate->kind, Bounds::Kind::Sphere);
+    EXPECT_EQ(sheet.object.gate->center, (Vec3d{0, 0, 1}));
+    EXPECT_EQ(sheet.object.gate->radius, 2.0);
+    EXPECT_EQ(sheet.object.bounds.enclosing_box().hi.x, 1e4);
+    EXPECT_TRUE(sheet.object.open);
+    // On a bounded solid it is not needed: a note, no gate.
+    const PovImport ball = import(lit + "sphere { 0, 1 bounded_by { box { -2, 2 } } }");
+    EXPECT_FALSE(first_node(ball).object.gate);
+    EXPECT_EQ(ball.notes.size(), 1U);
+}
+
 TEST(PovObjects, ClippingLeavesASurfaceOpen) {
     // clipped_by planes: the sphere is open, drawn where both planes say inside.
     const SceneNode& s = first_node(import(lit + "sphere { 0, 1 clipped_by { plane { x, 0.5 } plane { -x, 0.5 } } }"));

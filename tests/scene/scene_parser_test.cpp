@@ -136,12 +136,16 @@ TEST(SceneParser, UnknownAndRepeatedKeys) {
               "(expected color, ambient, diffuse, specular, shininess or reflection); did you mean 'color'?");
     EXPECT_EQ(error_of("object { surface x  methd interval }"),
               "scene.zs:1:21: unknown key 'methd' in the object block (expected surface, bounds, method, "
-              "solver, normals, partition, material, cut, open, clip, translate, rotate, scale, shear or matrix); did you mean 'method'?");
+              "solver, normals, partition, material, cut, open, clip, gate, translate, rotate, scale, shear or matrix); "
+              "did you mean 'method'?");
     EXPECT_EQ(error_of("object { surface x  method intervall }"),
               "scene.zs:1:28: unknown method 'intervall' (expected auto, sphere, interval, lg, polynomial, newton, "
               "regula_falsi or bisection); did you mean 'interval'?");
     EXPECT_EQ(error_of("object { surface x  surface y }"),
               "scene.zs:1:21: 'surface' is already set in this object block (at line 1, column 10)");
+    EXPECT_EQ(error_of("object { surface z  gate sphere((0, 0, 0), 1)  bounds none }"),
+              "scene.zs:1:21: a gate is for bounded objects: an object with bounds none is a half-space, which every "
+              "ray meets");
 }
 
 TEST(SceneParser, SingletonStatementsAppearOnce) {

@@ -42,7 +42,7 @@ TEST(SceneWriter, WritesEachKindOfNode) {
     const Scene s = parse("camera { from (1, 2, -5) at (0, 0.5, 0) fov 35 }\n"
                           "light { direction (1, -1, 1) color (0.5, 0.5, 0.5) shadows off }\n"
                           "object \"o\" { surface x^2 + (-y)^2 + z^2 - 1 bounds sphere((0, 0, 0), 2) method interval open on "
-                          "clip x - 0.5 material { color (x, 0, 1) } translate (1, 0, 0) }\n"
+                          "clip x - 0.5 gate box((-1, -1, -1), (1, 1, 0.5)) material { color (x, 0, 1) } translate (1, 0, 0) }\n"
                           "blob { kernel blinn threshold 0.5 component { center (1, 0, 0) radius 2 blobbiness -2 scale (1, 2, 1) } "
                           "component { from (0, 0, 0) to (0, 1, 0) radius 0.5 } }\n"
                           "sweep { curve catmull_rom closed on radius 0.2 point (0, 0, 0) point (1, 0, 0) point (0, 1, 0) }\n"
@@ -58,6 +58,8 @@ TEST(SceneWriter, WritesEachKindOfNode) {
     EXPECT_TRUE(objects[0].object().open);
     EXPECT_EQ(objects[0].object().bounds.kind, Bounds::Kind::Sphere);
     EXPECT_EQ(objects[0].object().method, Method::Interval);
+    ASSERT_TRUE(objects[0].object().gate);
+    EXPECT_EQ(objects[0].object().gate->box.hi.z, 0.5);
     EXPECT_EQ(objects[1].object().blob->components().size(), 2U);
     EXPECT_TRUE(objects[5].object().fractal);
 }

@@ -70,8 +70,9 @@ ImplicitLeaf::ImplicitLeaf(std::size_t id, LeafDescription description)
       description_(narrowed(std::move(description))),
       tape_(description_.surface),
       region_(tape_, description_.bounds),
+      scale_(gated_scale(region_.scale(), description_.gate)),
       method_(resolve_method(description_.method, tape_)),
-      settings_(settings_for_scale(region_.scale())),
+      settings_(settings_for_scale(scale_)),
       partition_(resolve_partition(description_.partition, method_, tape_)) {
     settings_.polynomial_solver = description_.solver;
     if (description_.clip) {
@@ -100,7 +101,7 @@ void ImplicitLeaf::note_nan(const LeafScratch& leaf, std::uint64_t nans_before, 
 }
 
 SurfaceRef ImplicitLeaf::surface_at(const Ray& ray, double t, BoundaryKind kind) const {
-    return leaf_surface(*this, kind, description_.material, ray.at(t), region_.scale());
+    return leaf_surface(*this, kind, description_.material, ray.at(t), scale_);
 }
 
 void ImplicitLeaf::enter_cell(LeafScratch& leaf, const OctreeCell& cell, TraceScratch& scratch) const {
@@ -157,22 +158,43 @@ HitStatus ImplicitLeaf::all_hits(LeafScratch& leaf, Span span, TraceScratch& scr
     return status;
 }
 
-std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+std::optional<ImplicitLeaf::SearchedSpan> ImplicitLeaf::searched_span(const Ray& ray, double t_min,
+                                                                      double t_max) const {
+    constexpr double nowhere = std::numeric_limits<double>::quiet_NaN();
+    if (!description_.gate) {
+        const auto span = region_.clip(ray, t_min, t_max);
+        return span ? std::optional<SearchedSpan>({*span, nowhere}) : std::nullopt;
+    }
+    // As POV-Ray's bounding test, the gate is tried on the whole ray from
+    // its start: a shadow ray that meets it only beyond its light still sees the object.
+    const auto gate = description_.gate->clip(ray, t_min, std::numeric_limits<double>::infinity());
+    if (!gate) return std::nullopt;
     const auto span = region_.clip(ray, t_min, t_max);
     if (!span) return std::nullopt;
+    // The span reaches far beyond the gate, where the surface mostly is:
+    // about the ray's nearest approach to the gate's centre, the polynomial
+    // method's rounding bound is least where it matters.
+    return SearchedSpan{*span, gate_focus(*description_.gate, ray, *gate)};
+}
+
+std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
+    const auto found = searched_span(ray, t_min, t_max);
+    if (!found) return std::nullopt;
+    const Span span = found->span;
     LeafScratch& leaf = scratch_for(scratch);
     const std::uint64_t nans = scratch.counters.nan_evaluations;
     leaf.h.set_ray(ray);
+    leaf.h.set_focus(found->focus);
     if (description_.open) {  // a sheet: the first root, wherever the ray starts
         // Most rays start outside the solid: then the first hit is the first
         // root, as for a closed object, unless the clip removes it there.
         if (!octree_) {
-            const HitResult first = leaf.finder->first_hit(leaf.h, *span, scratch.counters);
+            const HitResult first = leaf.finder->first_hit(leaf.h, span, scratch.counters);
             if (first.status != HitStatus::Failed && !first.t) {
                 note_nan(leaf, nans, scratch);
                 return std::nullopt;  // no root at all in the span
             }
-            if (first.t && (*first.t > span->t0 || leaf.h.value(span->t0, scratch.counters) >= 0.0)) {
+            if (first.t && (*first.t > span.t0 || leaf.h.value(span.t0, scratch.counters) >= 0.0)) {
                 const Vec3d p = ray.at(*first.t);
                 bool clipped = false;
                 if (leaf.clip) {
@@ -186,11 +208,11 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
             }
         }
         leaf.roots.clear();
-        if (all_hits(leaf, *span, scratch) == HitStatus::Failed) ++scratch.counters.failed_queries;
+        if (all_hits(leaf, span, scratch) == HitStatus::Failed) ++scratch.counters.failed_queries;
         note_nan(leaf, nans, scratch);
         std::sort(leaf.roots.begin(), leaf.roots.end());
         for (const double t : leaf.roots) {
-            if (t < span->t0 || t > span->t1) continue;
+            if (t < span.t0 || t > span.t1) continue;
             if (leaf.clip) {  // clipped away here?
                 const Vec3d p = ray.at(t);
                 ++scratch.counters.point_evaluations;
@@ -202,7 +224,7 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
     }
     // A camera ray of a partitioned leaf starts where its tile's culling
     // says the solid may begin: nothing of it lies in front of that.
-    Span searched = *span;
+    Span searched = span;
     if (octree_ && scratch.camera_frustum) {
         searched.t0 = std::max(searched.t0, camera_ray_start(leaf, ray, scratch));
         if (!(searched.t0 <= searched.t1)) return std::nullopt;
@@ -215,32 +237,34 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
     // A hit at the span's start with the ray already inside: on the bounds'
     // cut when the ray came in through them, else the ray starts inside.
     BoundaryKind kind = BoundaryKind::Surface;
-    if (*hit.t == span->t0 && leaf.h.value(span->t0, scratch.counters) < 0.0)
-        kind = span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open;
+    if (*hit.t == span.t0 && leaf.h.value(span.t0, scratch.counters) < 0.0)
+        kind = span.t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open;
     return Hit{*hit.t, surface_at(ray, *hit.t, kind)};
 }
 
 void ImplicitLeaf::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {
-    const auto span = region_.clip(ray, t_min, t_max);
-    if (!span) return;
+    const auto found = searched_span(ray, t_min, t_max);
+    if (!found) return;
+    const Span span = found->span;
     LeafScratch& leaf = scratch_for(scratch);
     const std::uint64_t nans = scratch.counters.nan_evaluations;
     leaf.h.set_ray(ray);
+    leaf.h.set_focus(found->focus);
     std::vector<double>& roots = leaf.roots;
     roots.clear();
-    if (all_hits(leaf, *span, scratch) == HitStatus::Failed)
+    if (all_hits(leaf, span, scratch) == HitStatus::Failed)
         ++scratch.counters.failed_queries;  // the spans below are those of the roots found so far
     // The events: t0, the roots strictly inside the span, t1.
     std::sort(roots.begin(), roots.end());
-    std::erase_if(roots, [&](double t) { return !(t > span->t0 && t < span->t1); });
+    std::erase_if(roots, [&](double t) { return !(t > span.t0 && t < span.t1); });
     // Cells overlap by their pad, so a root near a face may come from both:
     // roots closer than the methods' own merge width are one.
     const double merge_width = 4.0 * leaf.h.to_t(settings_.tangent_width);
     const auto same_root = [merge_width](double a, double b) { return b - a <= merge_width; };
     roots.erase(std::unique(roots.begin(), roots.end(), same_root), roots.end());
     spans_from_roots(
-        roots, span->t0, span->t1, span->t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open,
-        span->t1 < t_max ? BoundaryKind::Bounds : BoundaryKind::Open,
+        roots, span.t0, span.t1, span.t0 > t_min ? BoundaryKind::Bounds : BoundaryKind::Open,
+        span.t1 < t_max ? BoundaryKind::Bounds : BoundaryKind::Open,
         [&](double t) { return leaf.h.value(t, scratch.counters) <= 0.0; },
         [&](double t, BoundaryKind kind) { return Hit{t, surface_at(ray, t, kind)}; }, out);
     note_nan(leaf, nans, scratch);
@@ -250,7 +274,7 @@ double ImplicitLeaf::normal_step() const {
     const double relative = description_.normal_step > 0.0                               ? description_.normal_step
                             : description_.normals == NormalMode::CentralDifference ? 1e-6
                                                                                     : 3e-9;
-    return relative * region_.scale();
+    return relative * scale_;
 }
 
 Vec3d ImplicitLeaf::local_normal(const SurfaceRef& surface, TraceScratch& scratch) const {
@@ -267,7 +291,7 @@ Vec3d ImplicitLeaf::local_normal(const SurfaceRef& surface, TraceScratch& scratc
             const Vec3d n = unit_or_zero(evaluate_gradient(leaf.gradient, p).g);
             // Where ∇f vanishes (or overflows) exactly — at a kink of a
             // distance function — central differences over their default step.
-            return n != Vec3d{} ? n : central(1e-6 * region_.scale());
+            return n != Vec3d{} ? n : central(1e-6 * scale_);
         }
         case NormalMode::ForwardDifference: {  // eq. 34
             const double h = normal_step(), f0 = f(p.x, p.y, p.z);

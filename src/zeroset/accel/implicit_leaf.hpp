@@ -59,6 +59,11 @@ struct LeafDescription {
     /// expression of the object's own coordinates is positive, the surface
     /// is not drawn.
     std::optional<Expr> clip;
+    /// POV-Ray's bounded_by on its unbounded surfaces: a ray that does not
+    /// pass through these bounds (from its start on, without end) does not
+    /// see the object; one that does sees every hit in the object's bounds,
+    /// before the gate or beyond it.
+    std::optional<Bounds> gate;
 };
 
 /// Auto → Lipschitz for the methods that bound f over cells (interval, LG,
@@ -122,6 +127,14 @@ public:
 
 private:
     LeafScratch& scratch_for(TraceScratch& scratch) const;
+    /// The part of [t_min, t_max] to search — the ray within the search
+    /// region, nothing when it misses the gate — and where along it the
+    /// surface most likely is (NaN: anywhere; RayFunction::set_focus).
+    struct SearchedSpan {
+        Span span;
+        double focus;
+    };
+    [[nodiscard]] std::optional<SearchedSpan> searched_span(const Ray& ray, double t_min, double t_max) const;
     /// Counts the cell and makes its tape the ray function's base.
     void enter_cell(LeafScratch& leaf, const OctreeCell& cell, TraceScratch& scratch) const;
     /// Where a camera ray can start to look for the solid: the depth its
@@ -141,6 +154,7 @@ private:
     LeafDescription description_;
     Tape tape_;
     SearchRegion region_;  // the bounds, shrunk to the surface
+    double scale_;  // the size its tolerances and offsets follow (gated_scale)
     Method method_;
     RootFinderSettings settings_;
     Partition partition_;

@@ -418,15 +418,14 @@ std::shared_ptr<PovObject> PovParser::finish_object(ObjectBuilder& b, std::share
         }
     }
     if (b.bounded_by) {
-        // On an open surface (a polynomial's sheet) POV-Ray's bounded_by cuts
-        // it: there it is the object's bounds, when it fits in them.
+        // On an open surface (a polynomial's sheet) POV-Ray's bounded_by
+        // decides which rays see it: the object's gate.
         std::optional<Bounds> region;
         if (node->kind == SceneNode::Kind::Object && node->object.open && !b.bounded_by->object->inverse)
             if (const auto into_leaf = node->transform.inverse())
                 region = clip_region(*b.bounded_by->object, *into_leaf * b.bounded_by->to_local, b.bounded_by->where);
-        const Box3 now = node->kind == SceneNode::Kind::Object ? node->object.bounds.enclosing_box() : Box3{};
-        if (region && now.contains(region->enclosing_box().lo) && now.contains(region->enclosing_box().hi))
-            node->object.bounds = *region;
+        if (region)
+            node->object.gate = *region;
         else
             note(b.bounded_by->where, "bounded_by is not needed: zeroset bounds objects itself");
     }

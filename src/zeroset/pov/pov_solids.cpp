@@ -232,13 +232,12 @@ std::shared_ptr<PovObject> PovParser::polynomial(const PovToken& keyword, Object
     constexpr double e = unbounded_extent;
     o.bounds = Bounds::make_box({{-e, -e, -e}, {e, e, e}});
     if (o.surface.is_constant_valued()) fail(keyword, "the " + w + "'s coefficients are all 0 but the constant");
-    // A polynomial surface is a sheet, as POV-Ray draws it; a bounded_by
-    // sphere or box cuts it open, as the bounds of an open object (POV-Ray
-    // clips by it too), and finish_object clips it by clipped_by.
+    // A polynomial surface is a sheet, as POV-Ray draws it, clipped by
+    // clipped_by in finish_object; a bounded_by sphere or box is its gate.
     o.open = true;
     if (b.bounded_by && !b.bounded_by->object->inverse) {
         if (const auto region = clip_region(*b.bounded_by->object, b.bounded_by->to_local, b.bounded_by->where)) {
-            o.bounds = *region;
+            o.gate = *region;
             b.bounded_by.reset();
         }
     }

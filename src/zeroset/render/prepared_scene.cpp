@@ -231,6 +231,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             d.partition = partition;
             d.open = o.open;
             d.clip = o.clip;
+            d.gate = o.gate;
             if (const auto f = footprints_.find(node.get()); f != footprints_.end()) d.footprint_pixels = f->second;
             d.on_octree_progress = overrides_.on_progress;
             d.material = around;

@@ -10,9 +10,11 @@ namespace zeroset {
 
 namespace {
 
-void run_method(MethodOutcome& o, const Tape& tape, const Ray& ray, Span span, const RootFinderSettings& settings) {
+void run_method(MethodOutcome& o, const Tape& tape, const Ray& ray, Span span, double focus,
+                const RootFinderSettings& settings) {
     RayFunction h(tape);
     h.set_ray(ray);
+    h.set_focus(focus);
     RootFinderSettings s = settings;
     auto note_failure = [&o](HitStatus& status, const std::exception& e) {
         status = HitStatus::Failed;
@@ -43,13 +45,13 @@ void run_method(MethodOutcome& o, const Tape& tape, const Ray& ray, Span span, c
 }  // namespace
 
 RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray, std::span<const Method> methods,
-                   const RootFinderSettings& settings) {
+                   const RootFinderSettings& settings, double focus) {
     RayProbe probe{ray, region.clip(ray, 0.0, std::numeric_limits<double>::infinity()), {}};
     for (const Method m : methods) {
         MethodOutcome& o = probe.methods.emplace_back();
         o.method = m;
         o.resolved = resolve_method(m, tape);
-        if (probe.span) run_method(o, tape, ray, *probe.span, settings);
+        if (probe.span) run_method(o, tape, ray, *probe.span, focus, settings);
     }
     return probe;
 }
@@ -61,12 +63,26 @@ std::string method_label(const MethodOutcome& outcome) {
 
 ObjectProbe::ObjectProbe(const PlacedObject& placed, std::optional<double> newton_from)
     : placed_(placed), tape_(surface_of(placed.object())), region_(tape_, placed.object().bounds),
-      settings_(settings_for_scale(region_.scale())) {
+      settings_(settings_for_scale(gated_scale(region_.scale(), placed.object().gate))) {
     settings_.newton_start = newton_from;
 }
 
 RayProbe ObjectProbe::probe(const Ray& scene_ray, std::span<const Method> methods) const {
-    return probe_ray(tape_, region_, to_object_space(placed_, scene_ray), methods, settings_);
+    const Ray ray = to_object_space(placed_, scene_ray);
+    const std::optional<Bounds>& gate = placed_.object().gate;
+    if (!gate) return probe_ray(tape_, region_, ray, methods, settings_);
+    const std::optional<Span> in_gate = gate->clip(ray, 0.0, std::numeric_limits<double>::infinity());
+    if (!in_gate) {
+        RayProbe probe{ray, std::nullopt, {}, true};  // no method runs: every one finds nothing
+        for (const Method m : methods) {
+            MethodOutcome& o = probe.methods.emplace_back();
+            o.method = m;
+            o.resolved = resolve_method(m, tape_);
+        }
+        return probe;
+    }
+    // The methods run as the renderer runs them behind a gate (ImplicitLeaf).
+    return probe_ray(tape_, region_, ray, methods, settings_, gate_focus(*gate, ray, *in_gate));
 }
 
 }  // namespace zeroset

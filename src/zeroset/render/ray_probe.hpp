@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -44,14 +45,15 @@ struct RayProbe {
     Ray ray;
     std::optional<Span> span;  // the ray in the search region, from t = 0; none when it misses it
     std::vector<MethodOutcome> methods;
+    bool misses_gate = false;  // the object has a gate (Object::gate) and the ray misses it: no span
 };
 
 /// Runs every method of `methods` on the ray: a fresh RootFinder for each
 /// query, so neither query's evaluations or log include the other's. A
 /// method that throws (e.g. one not implemented yet) is reported as failed
-/// with the exception's message.
+/// with the exception's message. `focus`: RayFunction::set_focus.
 RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray, std::span<const Method> methods,
-                   const RootFinderSettings& settings);
+                   const RootFinderSettings& settings, double focus = std::numeric_limits<double>::quiet_NaN());
 
 /// A placed object of a scene made ready for probing rays given in the
 /// scene's space: its tape, its search region, and root-finder settings for

@@ -50,6 +50,8 @@ std::string ray_report_text(const RaySubject& subject, const RayProbe& probe) {
     if (probe.span)
         out += "span     t0 = " + number(probe.span->t0) + ", t1 = " + number(probe.span->t1) +
                "   (the ray inside the object's bounds, shrunk to its surface; from t = 0)\n";
+    else if (probe.misses_gate)
+        out += "span     none: the ray misses the object's gate\n";
     else
         out += "span     none: the ray misses the object's bounds (shrunk to its surface)\n";
     if (subject.newton_from) out += "newton   starts at t = " + number(*subject.newton_from) + "\n";

@@ -97,6 +97,10 @@ struct Object {
     /// An open object is not drawn where this expression is positive
     /// (LeafDescription::clip): POV-Ray's clipped_by.
     std::optional<Expr> clip;
+    /// Only rays that pass through these bounds see the object, and those
+    /// see all of it within its own bounds (LeafDescription::gate):
+    /// POV-Ray's bounded_by on its unbounded surfaces.
+    std::optional<Bounds> gate;
 };
 
 /// The object's f: its surface, or a blob's field as an expression. Throws

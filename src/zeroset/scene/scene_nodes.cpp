@@ -18,8 +18,8 @@ namespace zeroset {
 
 namespace {
 
-constexpr std::array<std::string_view, 10> object_keys{"surface",   "bounds",   "method", "solver", "normals",
-                                                       "partition", "material", "cut",    "open",   "clip"};
+constexpr std::array<std::string_view, 11> object_keys{"surface", "bounds", "method", "solver", "normals", "partition",
+                                                       "material", "cut",    "open",   "clip",   "gate"};
 constexpr std::array<std::string_view, 9> node_keywords{"object",   "group", "union",   "intersection", "difference",
                                                         "instance", "blob",  "fractal", "sweep"};
 
@@ -129,7 +129,7 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
     auto node = object_node(keyword);
     Object& object = node->object;
     bool has_surface = false;
-    std::optional<SourceLocation> clip_at;
+    std::optional<SourceLocation> clip_at, gate_at;
     SourceLocation surface_at{};
     std::vector<std::string_view> keys(object_keys.begin(), object_keys.end());
     keys.insert(keys.end(), transform_keys.begin(), transform_keys.end());
@@ -150,6 +150,10 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
                 surface_at = where;
             } else if (key.text == "bounds") {
                 object.bounds = bounds();
+            } else if (key.text == "gate") {
+                gate_at = key.where;
+                const Bounds gate = bounds();
+                object.gate = gate.kind == Bounds::Kind::None ? std::nullopt : std::optional<Bounds>(gate);
             } else if (key.text == "method") {
                 object.method = method();
             } else if (key.text == "solver") {
@@ -174,6 +178,8 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
         transform_keys);
     if (!has_surface) in_->fail(keyword.where, "an object needs a surface");
     if (object.clip && !object.open) in_->fail(*clip_at, "a clip is for open objects: add open on");
+    if (object.gate && object.bounds.kind == Bounds::Kind::None)
+        in_->fail(*gate_at, "a gate is for bounded objects: an object with bounds none is a half-space, which every ray meets");
     if (vanishes_throughout(object.surface, object.bounds))
         in_->fail(surface_at, "the surface is 0 at every point tried in its bounds (" +
                                   object.surface.to_string() +

@@ -57,11 +57,12 @@ public:
         line(text);
     }
 
-    void bounds(const Bounds& b) {
+    /// `key` (bounds or gate) and the shape.
+    void bounds(const Bounds& b, const std::string& key = "bounds") {
         switch (b.kind) {
-            case Bounds::Kind::None: line("bounds none"); break;
-            case Bounds::Kind::Box: line("bounds box(" + vector(b.box.lo) + ", " + vector(b.box.hi) + ")"); break;
-            case Bounds::Kind::Sphere: line("bounds sphere(" + vector(b.center) + ", " + number(b.radius) + ")"); break;
+            case Bounds::Kind::None: line(key + " none"); break;
+            case Bounds::Kind::Box: line(key + " box(" + vector(b.box.lo) + ", " + vector(b.box.hi) + ")"); break;
+            case Bounds::Kind::Sphere: line(key + " sphere(" + vector(b.center) + ", " + number(b.radius) + ")"); break;
         }
     }
 
@@ -132,6 +133,7 @@ public:
         if (o.cut_by_bounds) line("cut on");
         if (o.open) line("open on");
         if (o.clip) line("clip " + o.clip->to_string());
+        if (o.gate) bounds(*o.gate, "gate");
         modifiers(n);
         close();
     }

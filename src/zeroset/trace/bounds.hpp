@@ -101,4 +101,22 @@ struct Bounds {
     }
 };
 
+/// The size a gated object's tolerances and offsets follow: its search
+/// region's (`region_scale`), or the gate's diagonal when that is smaller —
+/// a gated sheet is searched in the ±10⁴ box, but what is seen of it lies
+/// about the gate.
+inline double gated_scale(double region_scale, const std::optional<Bounds>& gate) {
+    return gate ? std::min(region_scale, gate->enclosing_box().diagonal()) : region_scale;
+}
+
+/// Where a surface that `gate` gates (LeafDescription::gate) most likely
+/// is along the ray: its nearest approach to the gate's centre, within
+/// `in_gate`, the part of the ray inside the gate.
+inline double gate_focus(const Bounds& gate, const Ray& ray, Span in_gate) {
+    const Vec3d centre = gate.enclosing_box().center();
+    const double nearest = -dot(ray.origin - centre, ray.dir) / dot(ray.dir, ray.dir);
+    return std::clamp(nearest, in_gate.t0, in_gate.t1);
+}
+
+
 }  // namespace zeroset
