@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "zeroset/accel/csg.hpp"
 #include "zeroset/accel/implicit_leaf.hpp"
 #include "zeroset/accel/trace_scratch.hpp"
 
@@ -16,15 +17,15 @@ namespace {
 constexpr double endless = std::numeric_limits<double>::infinity();
 
 /// The open sheet z = 3 (a polynomial of degree one) in a box of side 200,
-/// gated by the unit ball about the origin, or not gated.
-std::shared_ptr<const ImplicitLeaf> sheet(bool gated) {
+/// gated by the unit ball about `gate` (the origin), or not gated.
+std::shared_ptr<const ImplicitLeaf> sheet(bool gated, const Vec3d& gate = {0, 0, 0}, std::size_t id = 0) {
     LeafDescription d;
     d.name = "sheet";
     d.surface = var_z() - 3.0;
     d.bounds = Bounds::make_box({{-100, -100, -100}, {100, 100, 100}});
     d.open = true;
-    if (gated) d.gate = Bounds::make_sphere({0, 0, 0}, 1.0);
-    return std::make_shared<const ImplicitLeaf>(0, d);
+    if (gated) d.gate = Bounds::make_sphere(gate, 1.0);
+    return std::make_shared<const ImplicitLeaf>(id, d);
 }
 
 std::optional<double> first_t(const ImplicitLeaf& leaf, const Ray& ray, double t_min, double t_max) {
@@ -79,6 +80,24 @@ TEST(Gate, SpansFollowTheGateToo) {
     ASSERT_FALSE(through.empty());  // the solid z ≤ 3, from the box's face to the sheet
     EXPECT_NEAR(through.back().exit.t, 8.0, 1e-9);
     EXPECT_TRUE(beside.empty());
+}
+
+TEST(Gate, IsTestedFromTheRaysStartInCsgToo) {
+    // An intersection asks its second child only from where its first
+    // begins (t = 40 here); the ray crossed the child's gate before that,
+    // at t ≈ 20, and POV-Ray's test is on the whole ray.
+    LeafDescription box;
+    box.name = "box";
+    box.surface = max(max(abs(var_x()), abs(var_y())), abs(var_z())) - 10.0;
+    box.bounds = Bounds::make_box({{-11, -11, -11}, {11, 11, 11}});
+    const auto first = std::make_shared<const ImplicitLeaf>(0, box);
+    const CsgNode both(CsgNode::Operation::Intersection, {first, sheet(true, {0, 0, -30}, 1)});
+    TraceScratch scratch(2);
+    SpanList inside;
+    both.spans(Ray{{0, 0, -50}, {0, 0, 1}}, 0.0, endless, scratch, inside);
+    ASSERT_EQ(inside.size(), 1U);  // the box's part below the sheet: z from −10 to 3
+    EXPECT_NEAR(inside[0].enter.t, 40.0, 1e-6);
+    EXPECT_NEAR(inside[0].exit.t, 53.0, 1e-6);
 }
 
 }  // namespace

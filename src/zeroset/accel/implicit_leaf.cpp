@@ -166,8 +166,10 @@ std::optional<ImplicitLeaf::SearchedSpan> ImplicitLeaf::searched_span(const Ray&
         return span ? std::optional<SearchedSpan>({*span, nowhere}) : std::nullopt;
     }
     // As POV-Ray's bounding test, the gate is tried on the whole ray from
-    // its start: a shadow ray that meets it only beyond its light still sees the object.
-    const auto gate = description_.gate->clip(ray, t_min, std::numeric_limits<double>::infinity());
+    // its start, t = 0 — not from t_min, which a CSG node moves up for its
+    // later children — and without end: a shadow ray that meets it only
+    // beyond its light still sees the object.
+    const auto gate = description_.gate->clip(ray, std::min(t_min, 0.0), std::numeric_limits<double>::infinity());
     if (!gate) return std::nullopt;
     const auto span = region_.clip(ray, t_min, t_max);
     if (!span) return std::nullopt;

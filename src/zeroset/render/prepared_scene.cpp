@@ -192,7 +192,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             // within the object's bounds.
             std::shared_ptr<const BlobModel> recognised;
             const Partition partition = overrides_.partition.value_or(o.partition);
-            if (!o.blob && method == Method::Auto && partition == Partition::Auto && !o.open && !o.clip &&
+            if (!o.blob && method == Method::Auto && partition == Partition::Auto && !o.open && !o.clip && !o.gate &&
                 o.bounds.kind != Bounds::Kind::None)
                 if (auto model = gaussian_sum_as_blob(o.surface))
                     recognised = std::make_shared<const BlobModel>(std::move(*model));
@@ -238,6 +238,7 @@ std::shared_ptr<const Primitive> PreparedScene::prepare(const SceneNodePtr& node
             around = no_material;  // the leaf's own
             try {
                 if (o.bounds.kind == Bounds::Kind::None) {
+                    if (o.gate) throw RenderError("object '" + name + "': a gate needs bounds (without, it is a half-space)");
                     primitive = std::make_shared<const HalfSpace>(name, o.surface, d.material);
                     ++planes_;
                 } else {

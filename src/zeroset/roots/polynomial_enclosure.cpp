@@ -106,7 +106,10 @@ double root_radius(const PolynomialEnclosure& f, double within) {
     }
     double largest = 0.0;
     for (std::size_t k = 1; k <= n; ++k) {
-        largest = std::max(largest, kth_root((std::abs(f.value[n - k]) + radius(n - k)) / lead, k));
+        // (A ratio below the normal range would lose digits, and its root be
+        // too small: it is taken as the smallest normal number.)
+        const double ratio = (std::abs(f.value[n - k]) + radius(n - k)) / lead;
+        largest = std::max(largest, kth_root(ratio > 0.0 ? std::max(ratio, std::numeric_limits<double>::min()) : 0.0, k));
     }
     // The sum of the other terms over the leading one is below Σ 2^−k ≤
     // 1 − 2^−n beyond the bound: room for the roots' rounding many times over.

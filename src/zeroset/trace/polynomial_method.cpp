@@ -43,17 +43,16 @@ CentredSpan centre(Span span, double focus) {
     return {t_c, std::min(span.t0 - t_c, 0.0), std::max(span.t1 - t_c, 0.0)};
 }
 
-/// For a span centred on the ray's focus (RayFunction::set_focus), cuts it
-/// to F's root radius about the focus: no root of F lies beyond, so the
-/// long span of an unbounded surface shrinks to where the surface can be.
-/// (About a span's middle the radius rarely cuts: not tried there.) False
-/// when nothing of the span is left.
-bool within_root_radius(const PolynomialEnclosure& f, CentredSpan& c, double focus) {
-    if (std::isnan(focus)) return true;
+/// With a focus (RayFunction::set_focus), cuts the span to F's root radius
+/// about its centre — the focus, when it lies in the span: no root of F lies
+/// beyond, so the long span of an unbounded surface shrinks to where the
+/// surface can be. (Without one the radius is not tried: about a span's
+/// middle it rarely cuts.) The span keeps s0 ≤ 0 ≤ s1.
+void cut_to_root_radius(const PolynomialEnclosure& f, CentredSpan& c, double focus) {
+    if (std::isnan(focus)) return;
     const double reach = root_radius(f, std::max(-c.s0, c.s1));
     c.s0 = std::max(c.s0, -reach);
     c.s1 = std::min(c.s1, reach);
-    return c.s0 <= c.s1;
 }
 
 /// False, with the NaN recorded in h like every method records it, when a
@@ -126,7 +125,7 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
     }
 
     const PolynomialEnclosure enclosure = current_enclosure();
-    if (!within_root_radius(enclosure, c, h.focus())) return {std::nullopt, HitStatus::NoHit};
+    cut_to_root_radius(enclosure, c, h.focus());
     const auto answer = [&](const PossibleRoot& hit) {
         counters.point_evaluations += static_cast<std::uint64_t>(hit.evaluations);
         return hit.found ? hit_at(hit.t) : HitResult{std::nullopt, HitStatus::NoHit};
@@ -176,7 +175,8 @@ HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<doub
         // within the rounding bound of 0 — so that spans built from these
         // hits (Roth CSG) miss no graze either.
         const PolynomialEnclosure enclosure = current_enclosure();
-        if (!within_root_radius(enclosure, c, h.focus()) || provably_positive(enclosure, c.s0, c.s1)) return HitStatus::NoHit;
+        cut_to_root_radius(enclosure, c, h.focus());
+        if (provably_positive(enclosure, c.s0, c.s1)) return HitStatus::NoHit;
         std::array<double, RayPolynomialProgram::max_degree> extrema{};
         const int extremum_count = extrema_of(value, c.s0, c.s1, extrema, counters);
         int evaluations = 0;
