@@ -165,18 +165,13 @@ std::optional<ImplicitLeaf::SearchedSpan> ImplicitLeaf::searched_span(const Ray&
         const auto span = region_.clip(ray, t_min, t_max);
         return span ? std::optional<SearchedSpan>({*span, nowhere}) : std::nullopt;
     }
-    // As POV-Ray's bounding test, the gate is tried on the whole ray from
-    // its start, t = 0 — not from t_min, which a CSG node moves up for its
-    // later children — and without end: a shadow ray that meets it only
-    // beyond its light still sees the object.
-    const auto gate = description_.gate->clip(ray, std::min(t_min, 0.0), std::numeric_limits<double>::infinity());
-    if (!gate) return std::nullopt;
+    // The span reaches far beyond the gate, where the surface mostly is:
+    // about the focus, the polynomial method's rounding bound is least where it matters.
+    const std::optional<double> focus = gate_focus(*description_.gate, ray, t_min);
+    if (!focus) return std::nullopt;
     const auto span = region_.clip(ray, t_min, t_max);
     if (!span) return std::nullopt;
-    // The span reaches far beyond the gate, where the surface mostly is:
-    // about the ray's nearest approach to the gate's centre, the polynomial
-    // method's rounding bound is least where it matters.
-    return SearchedSpan{*span, gate_focus(*description_.gate, ray, *gate)};
+    return SearchedSpan{*span, *focus};
 }
 
 std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {

@@ -45,13 +45,14 @@ void run_method(MethodOutcome& o, const Tape& tape, const Ray& ray, Span span, d
 }  // namespace
 
 RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray, std::span<const Method> methods,
-                   const RootFinderSettings& settings, double focus) {
-    RayProbe probe{ray, region.clip(ray, 0.0, std::numeric_limits<double>::infinity()), {}};
+                   const RootFinderSettings& settings, std::optional<double> focus) {
+    RayProbe probe{ray, std::nullopt, {}, !focus};
+    if (focus) probe.span = region.clip(ray, 0.0, std::numeric_limits<double>::infinity());
     for (const Method m : methods) {
         MethodOutcome& o = probe.methods.emplace_back();
         o.method = m;
         o.resolved = resolve_method(m, tape);
-        if (probe.span) run_method(o, tape, ray, *probe.span, focus, settings);
+        if (probe.span) run_method(o, tape, ray, *probe.span, *focus, settings);
     }
     return probe;
 }
@@ -68,21 +69,11 @@ ObjectProbe::ObjectProbe(const PlacedObject& placed, std::optional<double> newto
 }
 
 RayProbe ObjectProbe::probe(const Ray& scene_ray, std::span<const Method> methods) const {
+    // The methods run as the renderer runs them (ImplicitLeaf::searched_span).
     const Ray ray = to_object_space(placed_, scene_ray);
     const std::optional<Bounds>& gate = placed_.object().gate;
-    if (!gate) return probe_ray(tape_, region_, ray, methods, settings_);
-    const std::optional<Span> in_gate = gate->clip(ray, 0.0, std::numeric_limits<double>::infinity());
-    if (!in_gate) {
-        RayProbe probe{ray, std::nullopt, {}, true};  // no method runs: every one finds nothing
-        for (const Method m : methods) {
-            MethodOutcome& o = probe.methods.emplace_back();
-            o.method = m;
-            o.resolved = resolve_method(m, tape_);
-        }
-        return probe;
-    }
-    // The methods run as the renderer runs them behind a gate (ImplicitLeaf).
-    return probe_ray(tape_, region_, ray, methods, settings_, gate_focus(*gate, ray, *in_gate));
+    const std::optional<double> focus = gate ? gate_focus(*gate, ray, 0.0) : std::numeric_limits<double>::quiet_NaN();
+    return probe_ray(tape_, region_, ray, methods, settings_, focus);
 }
 
 }  // namespace zeroset

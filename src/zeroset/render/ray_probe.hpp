@@ -51,9 +51,12 @@ struct RayProbe {
 /// Runs every method of `methods` on the ray: a fresh RootFinder for each
 /// query, so neither query's evaluations or log include the other's. A
 /// method that throws (e.g. one not implemented yet) is reported as failed
-/// with the exception's message. `focus`: RayFunction::set_focus.
+/// with the exception's message. `focus`: RayFunction::set_focus (NaN: none);
+/// nothing when the ray misses the object's gate (gate_focus), and then no
+/// method runs.
 RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray, std::span<const Method> methods,
-                   const RootFinderSettings& settings, double focus = std::numeric_limits<double>::quiet_NaN());
+                   const RootFinderSettings& settings,
+                   std::optional<double> focus = std::numeric_limits<double>::quiet_NaN());
 
 /// A placed object of a scene made ready for probing rays given in the
 /// scene's space: its tape, its search region, and root-finder settings for

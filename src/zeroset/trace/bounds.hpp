@@ -109,13 +109,18 @@ inline double gated_scale(double region_scale, const std::optional<Bounds>& gate
     return gate ? std::min(region_scale, gate->enclosing_box().diagonal()) : region_scale;
 }
 
-/// Where a surface that `gate` gates (LeafDescription::gate) most likely
-/// is along the ray: its nearest approach to the gate's centre, within
-/// `in_gate`, the part of the ray inside the gate.
-inline double gate_focus(const Bounds& gate, const Ray& ray, Span in_gate) {
+/// A ray against an object's gate (LeafDescription::gate): nothing when it
+/// misses it — tested, as POV-Ray's bounded_by, from the ray's start
+/// (t = 0, not a later t_min, which a CSG node moves up for its later
+/// children) and without end, so a shadow ray that meets it only beyond its
+/// light still counts — else where the gated surface most likely lies along
+/// the ray: its nearest approach to the gate's centre, within the gate.
+inline std::optional<double> gate_focus(const Bounds& gate, const Ray& ray, double t_min) {
+    const auto in_gate = gate.clip(ray, std::min(t_min, 0.0), std::numeric_limits<double>::infinity());
+    if (!in_gate) return std::nullopt;
     const Vec3d centre = gate.enclosing_box().center();
     const double nearest = -dot(ray.origin - centre, ray.dir) / dot(ray.dir, ray.dir);
-    return std::clamp(nearest, in_gate.t0, in_gate.t1);
+    return std::clamp(nearest, in_gate->t0, in_gate->t1);
 }
 
 
