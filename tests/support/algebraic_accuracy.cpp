@@ -17,7 +17,8 @@ double SolverAccuracy::median_error() const {
     return sorted[sorted.size() / 2];
 }
 
-SolverAccuracy measure_solver(const Object& object, const std::vector<AlgebraicRay>& rays, PolynomialSolver solver) {
+SolverAccuracy measure_solver(const Object& object, const std::vector<AlgebraicRay>& rays, PolynomialSolver solver,
+                              double lengthen) {
     const Tape tape(object.surface);
     const double scale = object.bounds.enclosing_box().diagonal();
     RootFinderSettings settings = settings_for_scale(scale);
@@ -29,7 +30,7 @@ SolverAccuracy measure_solver(const Object& object, const std::vector<AlgebraicR
     for (const AlgebraicRay& r : rays) {
         h.set_ray(r.ray);
         TraceCounters counters;
-        const HitResult hit = method.first_hit(h, r.span, counters);
+        const HitResult hit = method.first_hit(h, Span{r.span.t0, r.span.t1 + lengthen}, counters);
         ++a.rays;
         std::optional<OracleRoot> reference = r.reference;
         if (oracle.sign(r.ray, r.span.t0) < 0) reference = OracleRoot{r.span.t0, RootKind::Simple, 0.0};

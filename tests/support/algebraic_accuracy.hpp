@@ -37,6 +37,13 @@ struct SolverAccuracy {
 /// or tangent root 1e-7 × scale (a near-double root is only determined to
 /// about the square root of the rounding). A hit more than the tolerance
 /// before the root is an unresolved hit, not a match.
-SolverAccuracy measure_solver(const Object& object, const std::vector<AlgebraicRay>& rays, PolynomialSolver solver);
+///
+/// With `lengthen` > 0 the method searches each ray's span run on by that
+/// much (in t) past its end, as a ray through far larger bounds than the
+/// surface's would be: the first root stays the reference's, and the
+/// tolerances stay those of the ray's own span — a method may not lose
+/// accuracy on the surface because the span reaches far beyond it.
+SolverAccuracy measure_solver(const Object& object, const std::vector<AlgebraicRay>& rays, PolynomialSolver solver,
+                              double lengthen = 0.0);
 
 }  // namespace zeroset::test

@@ -73,47 +73,33 @@ double enclosure_bound(const PolynomialEnclosure& f, double t) {
     return (radius + horner * magnitude) * (1.0 + horner);
 }
 
-namespace {
-
-/// r^(1/k), by square and cube roots where they serve (pow is slower).
-double kth_root(double r, std::size_t k) {
-    switch (k) {
-        case 1: return r;
-        case 2: return std::sqrt(r);
-        case 3: return std::cbrt(r);
-        case 4: return std::sqrt(std::sqrt(r));
-        case 6: return std::sqrt(std::cbrt(r));
-        default: return std::pow(r, 1.0 / static_cast<double>(k));
-    }
-}
-
-}  // namespace
-
 double root_radius(const PolynomialEnclosure& f, double within) {
     constexpr double none = std::numeric_limits<double>::infinity();
-    if (f.value.size() < 2 || f.value.size() > max_polynomial_degree + 1 || f.radius.size() > f.value.size()) return none;
-    const std::size_t n = f.value.size() - 1;
-    const auto radius = [&](std::size_t i) { return i < f.radius.size() ? f.radius[i] : 0.0; };
-    const double lead = std::abs(f.value[n]) - radius(n);
-    if (!(lead > 0.0) || !std::isfinite(lead)) return none;
-    // First whether any ratio reaches (within/2)^k: then the bound is at
-    // least `within` and cuts nothing, found without a division or a root.
-    const double half = 0.5 * within;
-    double power = lead;
-    for (std::size_t k = 1; k <= n; ++k) {
-        power *= half;
-        if (!(std::abs(f.value[n - k]) + radius(n - k) < power)) return none;
-    }
-    double largest = 0.0;
-    for (std::size_t k = 1; k <= n; ++k) {
-        // (A ratio below the normal range would lose digits, and its root be
-        // too small: it is taken as the smallest normal number.)
-        const double ratio = (std::abs(f.value[n - k]) + radius(n - k)) / lead;
-        largest = std::max(largest, kth_root(ratio > 0.0 ? std::max(ratio, std::numeric_limits<double>::min()) : 0.0, k));
-    }
-    // The sum of the other terms over the leading one is below Σ 2^−k ≤
-    // 1 − 2^−n beyond the bound: room for the roots' rounding many times over.
-    return 2.0 * largest * (1.0 + 1e-9);
+    const std::size_t size = f.value.size();
+    if (size < 2 || size > max_polynomial_degree + 1 || f.radius.size() != size) return none;
+    const std::size_t n = size - 1;
+    const double* value = f.value.data();
+    const double* radius = f.radius.data();
+    const double lead = std::abs(value[n]) - radius[n];
+    if (!(lead > 0.0 && lead < none)) return none;
+    // Whether ρ is a bound: every other term, with its radius, below
+    // lead·(ρ/2)^k. Then beyond ρ they sum to less than Σ 2^−k ≤ 1 − 2^−n of
+    // the leading term — room for the products' rounding many times over.
+    const auto bounds = [&](double rho) {
+        const double half = 0.5 * rho;
+        double power = lead;
+        for (std::size_t k = 1; k <= n; ++k) {
+            power *= half;
+            if (!(std::abs(value[n - k]) + radius[n - k] < power)) return false;
+        }
+        return true;
+    };
+    // Halved from the span's reach while it still bounds: no division and no
+    // k-th root, and within a factor 2 of the least such radius.
+    if (!bounds(within)) return none;
+    double rho = within;
+    for (int halving = 0; halving < 64 && bounds(0.5 * rho); ++halving) rho *= 0.5;
+    return rho;
 }
 
 bool provably_positive(const PolynomialEnclosure& f, double t0, double t1) {

@@ -1,5 +1,5 @@
-// F(t) about the span's midpoint with its rounding bound, then the chosen
-// solver, guarded.
+// F(t) with its rounding bound, about the ray's point nearest f's origin and
+// cut to its root radius there; then the chosen solver, guarded.
 #include "zeroset/trace/polynomial_method.hpp"
 
 #include <algorithm>
@@ -37,22 +37,36 @@ struct CentredSpan {
     double s1;
 };
 
-/// About the span's middle, or about the ray's focus when it lies in the span.
-CentredSpan centre(Span span, double focus) {
-    const double t_c = focus >= span.t0 && focus <= span.t1 ? focus : 0.5 * span.t0 + 0.5 * span.t1;
-    return {t_c, std::min(span.t0 - t_c, 0.0), std::max(span.t1 - t_c, 0.0)};
+/// About the ray's focus when it lies in the span; else about the span's
+/// point nearest the origin of f's coordinates.
+CentredSpan centre(Span span, double focus, const Ray& ray) {
+    if (!(focus >= span.t0 && focus <= span.t1)) {
+        const double nearest = -dot(ray.origin, ray.dir) / dot(ray.dir, ray.dir);
+        focus = std::isfinite(nearest) ? std::clamp(nearest, span.t0, span.t1) : 0.5 * span.t0 + 0.5 * span.t1;
+    }
+    return {focus, std::min(span.t0 - focus, 0.0), std::max(span.t1 - focus, 0.0)};
 }
 
-/// With a focus (RayFunction::set_focus), cuts the span to F's root radius
-/// about its centre — the focus, when it lies in the span: no root of F lies
-/// beyond, so the long span of an unbounded surface shrinks to where the
-/// surface can be. (Without one the radius is not tried: about a span's
-/// middle it rarely cuts.) The span keeps s0 ≤ 0 ≤ s1.
-void cut_to_root_radius(const PolynomialEnclosure& f, CentredSpan& c, double focus) {
-    if (std::isnan(focus)) return;
-    const double reach = root_radius(f, std::max(-c.s0, c.s1));
+/// Cuts the span to F's root radius about its centre: no root of F lies
+/// beyond. About the point nearest the origin (or the focus) the radius is
+/// about the surface's size, so the long span of an unbounded surface
+/// shrinks to where the surface can be — and the guard, which takes F̂'s
+/// bound at a piece's far end for the whole piece, does not blur the surface
+/// with the bound from 10⁴ units away. Only a cut that shortens the span
+/// eightfold is looked for: most spans are about as long as their surface,
+/// and a small trim would cost more than it saves. The span keeps
+/// s0 ≤ 0 ≤ s1.
+void cut_to_root_radius(const PolynomialEnclosure& f, CentredSpan& c) {
+    const double reach = root_radius(f, 0.125 * std::max(-c.s0, c.s1));
     c.s0 = std::max(c.s0, -reach);
     c.s1 = std::min(c.s1, reach);
+}
+
+/// The sign of F̂'s leading term for s < 0: F's own sign before the cut to
+/// its root radius, where that term outweighs all the others.
+double leading_sign_before(std::span<const double> f) {
+    const double lead = f.back();
+    return f.size() % 2 == 0 ? -lead : lead;  // odd degree: s^n < 0
 }
 
 /// False, with the NaN recorded in h like every method records it, when a
@@ -106,7 +120,7 @@ int PolynomialMethod::solve(std::span<const double> c, double t0, double t1, std
 
 HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& counters) {
     ++counters.point_evaluations;  // one run of the compiled program
-    CentredSpan c = centre(span, h.focus());
+    CentredSpan c = centre(span, h.focus(), h.ray());
     program_.evaluate(h.ray(), c.t_c);
     const std::span<const double> value = program_.value();
     if (!defined_along(h, value, c, counters)) return {std::nullopt, HitStatus::Failed};
@@ -125,7 +139,11 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
     }
 
     const PolynomialEnclosure enclosure = current_enclosure();
-    cut_to_root_radius(enclosure, c, h.focus());
+    const double uncut_start = c.s0;
+    cut_to_root_radius(enclosure, c);
+    // Before the cut F has no root, and the sign of its leading term (which
+    // outweighs the others there): negative, the ray starts in the solid.
+    if (c.s0 > uncut_start && leading_sign_before(value) < 0.0) return {span.t0, HitStatus::Ok};
     const auto answer = [&](const PossibleRoot& hit) {
         counters.point_evaluations += static_cast<std::uint64_t>(hit.evaluations);
         return hit.found ? hit_at(hit.t) : HitResult{std::nullopt, HitStatus::NoHit};
@@ -154,7 +172,7 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
 
 double PolynomialMethod::rounding_bound(const Ray& ray, Span span) {
     if (!program_.error_known()) return std::numeric_limits<double>::infinity();
-    const CentredSpan c = centre(span, std::numeric_limits<double>::quiet_NaN());
+    const CentredSpan c = centre(span, std::numeric_limits<double>::quiet_NaN(), ray);
     program_.evaluate(ray, c.t_c);
     const PolynomialEnclosure f = current_enclosure();
     return std::max(enclosure_bound(f, c.s0), enclosure_bound(f, c.s1));
@@ -162,7 +180,7 @@ double PolynomialMethod::rounding_bound(const Ray& ray, Span span) {
 
 HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) {
     ++counters.point_evaluations;
-    CentredSpan c = centre(span, h.focus());
+    CentredSpan c = centre(span, h.focus(), h.ray());
     program_.evaluate(h.ray(), c.t_c);
     const std::span<const double> value = program_.value();
     if (!defined_along(h, value, c, counters)) return HitStatus::Failed;
@@ -175,7 +193,7 @@ HitStatus PolynomialMethod::all_hits(RayFunction& h, Span span, std::vector<doub
         // within the rounding bound of 0 — so that spans built from these
         // hits (Roth CSG) miss no graze either.
         const PolynomialEnclosure enclosure = current_enclosure();
-        cut_to_root_radius(enclosure, c, h.focus());
+        cut_to_root_radius(enclosure, c);
         if (provably_positive(enclosure, c.s0, c.s1)) return HitStatus::NoHit;
         std::array<double, RayPolynomialProgram::max_degree> extrema{};
         const int extremum_count = extrema_of(value, c.s0, c.s1, extrema, counters);

@@ -46,11 +46,11 @@ public:
     void reset_base_tape() { set_base_tape(*tape_, can_prune_); }
     [[nodiscard]] const Ray& ray() const { return ray_; }
     /// Where along the ray the surface most likely is (NaN: nowhere in
-    /// particular), set after set_ray(): the polynomial method forms the
-    /// ray's polynomial about it, where its rounding bound is least, and
-    /// searches only within the polynomial's root radius about it (a long
-    /// span, as an unbounded sheet's behind a gate, shrinks to where the
-    /// surface can be).
+    /// particular — the ray's point nearest f's origin), set after
+    /// set_ray(): the polynomial method forms the ray's polynomial about it,
+    /// where its rounding bound is least, and searches only within the
+    /// polynomial's root radius about it (a long span, as an unbounded
+    /// sheet's behind a gate, shrinks to where the surface can be).
     void set_focus(double t) { focus_ = t; }
     [[nodiscard]] double focus() const { return focus_; }
     /// |x_d|, rounded up: a length ℓ in space is ℓ / dir_length() in t.
