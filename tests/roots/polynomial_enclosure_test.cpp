@@ -141,7 +141,7 @@ TEST(PolynomialEnclosure, NoPolynomialWithinTheRadiusVanishesBeyondTheRootRadius
         for (std::size_t i = 0; i < value.size(); ++i) radius[i] = std::abs(value[i]) * std::pow(10.0, -12.0 + 4.0 * u(random));
         const PolynomialEnclosure f{value, radius};
         const double within = 1e6;
-        const double rho = root_radius(f, within);
+        const double rho = root_radius(f, within, within);
         if (!std::isfinite(rho)) continue;
         ++cut;
         EXPECT_GE(rho, farthest) << "trial " << trial;  // F̂'s own roots lie inside
@@ -162,14 +162,36 @@ TEST(PolynomialEnclosure, NoPolynomialWithinTheRadiusVanishesBeyondTheRootRadius
 
 TEST(PolynomialEnclosure, TheRootRadiusCutsNothingItCannotProve) {
     const std::vector<double> value{-4.0, 0.0, 1.0};  // roots ±2
-    EXPECT_EQ(root_radius({value, std::vector<double>{0.0, 0.0, 1.0}}, 1e6), std::numeric_limits<double>::infinity())
+    EXPECT_EQ(root_radius({value, std::vector<double>{0.0, 0.0, 1.0}}, 1e6, 1e6), std::numeric_limits<double>::infinity())
         << "the leading coefficient may be 0";
-    EXPECT_EQ(root_radius({value, std::vector<double>{0.0, 0.0, 0.0}}, 3.0), std::numeric_limits<double>::infinity())
+    EXPECT_EQ(root_radius({value, std::vector<double>{0.0, 0.0, 0.0}}, 3.0, 3.0), std::numeric_limits<double>::infinity())
         << "the bound (here 4) is no nearer than the span's ends";
-    const double rho = root_radius({value, std::vector<double>{0.0, 0.0, 0.0}}, 1e6);
+    const double rho = root_radius({value, std::vector<double>{0.0, 0.0, 0.0}}, 1e6, 1e6);
     EXPECT_GE(rho, 4.0);  // Fujiwara's bound, 2·√4
     EXPECT_LE(rho, 8.0);  // found by halving: within a factor 2 of it
-    EXPECT_EQ(root_radius({std::vector<double>{3.0}, std::vector<double>{0.0}}, 1e6), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(root_radius({std::vector<double>{3.0}, std::vector<double>{0.0}}, 1e6, 1e6), std::numeric_limits<double>::infinity());
+}
+
+// A ray along which the top form vanishes (steiner's along its axes): the
+// cubic coefficient is 0 to within its radius, and the quadratic leads up to
+// the span's reach.
+TEST(PolynomialEnclosure, TheRootRadiusLetsALowerTermLeadWhereTheTopOneMayVanish) {
+    const std::vector<double> value{-2.0, 1.0, 1.0, 1e-20};  // ≈ (t − 1)(t + 2)
+    const std::vector<double> radius{0.0, 0.0, 0.0, 2e-20};
+    const double within = 1e4;
+    EXPECT_EQ(root_radius({value, radius}, within, 2.0), std::numeric_limits<double>::infinity())
+        << "no bound below 2·√2 exists";
+    const double rho = root_radius({value, radius}, within, within);
+    EXPECT_GE(rho, 2.0 * std::sqrt(2.0));
+    EXPECT_LE(rho, 4.0 * std::sqrt(2.0));
+    // Every polynomial within the radii keeps its sign from ρ to the reach.
+    for (const double top : {-1e-20, 0.0, 3e-20}) {
+        for (double t = rho; t <= within; t *= 1.1) {
+            for (const double at : {t, -t}) EXPECT_GT(-2.0 + at + at * at + top * at * at * at, 0.0) << "t " << at;
+        }
+    }
+    EXPECT_EQ(root_radius({value, radius}, 1e21, 1e21), std::numeric_limits<double>::infinity())
+        << "over a reach where the cubic term may outweigh the quadratic, nothing leads";
 }
 
 TEST(FastPolynomialExtrema, AreTheRootsOfTheDerivative) {

@@ -73,16 +73,28 @@ double enclosure_bound(const PolynomialEnclosure& f, double t) {
     return (radius + horner * magnitude) * (1.0 + horner);
 }
 
-double root_radius(const PolynomialEnclosure& f, double within) {
+double root_radius(const PolynomialEnclosure& f, double within, double largest) {
     constexpr double none = std::numeric_limits<double>::infinity();
     const std::size_t size = f.value.size();
     if (size < 2 || size > max_polynomial_degree + 1 || f.radius.size() != size) return none;
-    const std::size_t n = size - 1;
+    if (!(largest > 0.0 && largest <= within && within < none)) return none;
     const double* value = f.value.data();
     const double* radius = f.radius.data();
-    const double lead = std::abs(value[n]) - radius[n];
+    const auto weight = [&](std::size_t i) { return std::abs(value[i]) + radius[i]; };
+    // The leading term: the highest whose coefficient cannot be 0 once the
+    // terms above it, at most their weight·within^(j−m)·|t|^m for |t| ≤
+    // within, are taken from it (a ray along which the top form vanishes,
+    // as steiner's along its axes, has a lower effective degree).
+    std::size_t n = size - 1;
+    double lead = std::abs(value[n]) - radius[n];
+    for (std::size_t m = n; !(lead > 0.0) && m-- > 1;) {
+        double above = 0.0;
+        for (std::size_t j = size - 1; j > m; --j) above = above * within + weight(j);
+        n = m;
+        lead = std::abs(value[m]) - radius[m] - above * within;
+    }
     if (!(lead > 0.0 && lead < none)) return none;
-    // Whether ρ is a bound: every other term, with its radius, below
+    // Whether ρ is a bound: every lower term, with its radius, below
     // lead·(ρ/2)^k. Then beyond ρ they sum to less than Σ 2^−k ≤ 1 − 2^−n of
     // the leading term — room for the products' rounding many times over.
     const auto bounds = [&](double rho) {
@@ -90,14 +102,14 @@ double root_radius(const PolynomialEnclosure& f, double within) {
         double power = lead;
         for (std::size_t k = 1; k <= n; ++k) {
             power *= half;
-            if (!(std::abs(value[n - k]) + radius[n - k] < power)) return false;
+            if (!(weight(n - k) < power)) return false;
         }
         return true;
     };
-    // Halved from the span's reach while it still bounds: no division and no
-    // k-th root, and within a factor 2 of the least such radius.
-    if (!bounds(within)) return none;
-    double rho = within;
+    // Halved while it still bounds: no division and no k-th root, and
+    // within a factor 2 of the least such radius (or largest·2^−64).
+    if (!bounds(largest)) return none;
+    double rho = largest;
     for (int halving = 0; halving < 64 && bounds(0.5 * rho); ++halving) rho *= 0.5;
     return rho;
 }

@@ -40,15 +40,15 @@ struct PossibleRoot {
 /// §5.1: γ₂ₙ·Σ|ĉ_i||t|^i), rounded up: |F(t) − horner(F̂, t)| ≤ this.
 double enclosure_bound(const PolynomialEnclosure& f, double t);
 
-/// A radius ρ beyond which F has no root, whatever F is within R of F̂
-/// (|t| ≥ ρ ⇒ F(t) ≠ 0, and F has the sign of its leading term there), by
-/// Fujiwara's bound: where |t| exceeds 2·((|f̂_{n−k}| + r_{n−k}) /
-/// (|f̂_n| − r_n))^{1/k} for every k, the leading term outweighs all the
-/// others with their radii. ρ is `within` halved while it stays such a
-/// bound: at most twice the least one. +∞ when the leading coefficient may
-/// be 0 (or F̂ is a constant), when the radii are not one per coefficient,
-/// or when the span given (|t| ≤ within) lies inside the bound anyway.
-double root_radius(const PolynomialEnclosure& f, double within);
+/// A radius ρ beyond which F has no root up to `within`, whatever F is
+/// within R of F̂ (ρ ≤ |t| ≤ within ⇒ F(t) ≠ 0), by Fujiwara's bound: where
+/// |t| exceeds 2·((|f̂_{n−k}| + r_{n−k}) / (|f̂_n| − r_n))^{1/k} for every k,
+/// the leading term outweighs all the others with their radii. When the
+/// leading coefficient may be 0 the next one leads, less what the terms
+/// above it can reach up to `within`. ρ is `largest` halved while it stays
+/// such a bound: at most twice the least one. +∞ when no coefficient can
+/// lead, or the bound exceeds `largest` (≤ within), or F̂ is a constant.
+double root_radius(const PolynomialEnclosure& f, double within, double largest);
 
 /// True when F > 0 throughout [t0, t1], shown by F̂'s Bernstein coefficients
 /// on it (bernstein.hpp) all exceeding the conversion's rounding plus R at

@@ -41,7 +41,11 @@ struct CentredSpan {
 /// point nearest the origin of f's coordinates.
 CentredSpan centre(Span span, double focus, const Ray& ray) {
     if (!(focus >= span.t0 && focus <= span.t1)) {
-        const double nearest = -dot(ray.origin, ray.dir) / dot(ray.dir, ray.dir);
+        // (With d scaled to its largest component: |d|² neither overflows
+        // nor underflows.)
+        const double m = max_abs(ray.dir);
+        const Vec3d d = ray.dir / m;
+        const double nearest = -dot(ray.origin, d) / (dot(d, d) * m);
         focus = std::isfinite(nearest) ? std::clamp(nearest, span.t0, span.t1) : 0.5 * span.t0 + 0.5 * span.t1;
     }
     return {focus, std::min(span.t0 - focus, 0.0), std::max(span.t1 - focus, 0.0)};
@@ -52,21 +56,15 @@ CentredSpan centre(Span span, double focus, const Ray& ray) {
 /// about the surface's size, so the long span of an unbounded surface
 /// shrinks to where the surface can be — and the guard, which takes F̂'s
 /// bound at a piece's far end for the whole piece, does not blur the surface
-/// with the bound from 10⁴ units away. Only a cut that shortens the span
-/// eightfold is looked for: most spans are about as long as their surface,
-/// and a small trim would cost more than it saves. The span keeps
-/// s0 ≤ 0 ≤ s1.
+/// with the bound from 10⁴ units away. Only a radius below an eighth of
+/// the span's reach from the centre is looked for: most spans are about as
+/// long as their surface, and a small trim would cost more than it saves.
+/// The span keeps s0 ≤ 0 ≤ s1.
 void cut_to_root_radius(const PolynomialEnclosure& f, CentredSpan& c) {
-    const double reach = root_radius(f, 0.125 * std::max(-c.s0, c.s1));
+    const double within = std::max(-c.s0, c.s1);
+    const double reach = root_radius(f, within, 0.125 * within);
     c.s0 = std::max(c.s0, -reach);
     c.s1 = std::min(c.s1, reach);
-}
-
-/// The sign of F̂'s leading term for s < 0: F's own sign before the cut to
-/// its root radius, where that term outweighs all the others.
-double leading_sign_before(std::span<const double> f) {
-    const double lead = f.back();
-    return f.size() % 2 == 0 ? -lead : lead;  // odd degree: s^n < 0
 }
 
 /// False, with the NaN recorded in h like every method records it, when a
@@ -141,9 +139,14 @@ HitResult PolynomialMethod::first_hit(RayFunction& h, Span span, TraceCounters& 
     const PolynomialEnclosure enclosure = current_enclosure();
     const double uncut_start = c.s0;
     cut_to_root_radius(enclosure, c);
-    // Before the cut F has no root, and the sign of its leading term (which
-    // outweighs the others there): negative, the ray starts in the solid.
-    if (c.s0 > uncut_start && leading_sign_before(value) < 0.0) return {span.t0, HitStatus::Ok};
+    if (c.s0 > uncut_start) {
+        // F has no root between the ray's start and the cut's, so the same
+        // sign at both; where F̂ cannot show it at the cut, the start is kept.
+        const double at_cut = horner(value, c.s0).value;
+        const double bound = enclosure_bound(enclosure, c.s0);
+        if (at_cut < -bound) return {span.t0, HitStatus::Ok};  // the ray starts in the solid
+        if (!(at_cut > bound)) c.s0 = uncut_start;
+    }
     const auto answer = [&](const PossibleRoot& hit) {
         counters.point_evaluations += static_cast<std::uint64_t>(hit.evaluations);
         return hit.found ? hit_at(hit.t) : HitResult{std::nullopt, HitStatus::NoHit};

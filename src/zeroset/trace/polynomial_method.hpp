@@ -6,10 +6,10 @@
 // 2022). Sturm, Descartes and the fast solver isolate every real root;
 // Laguerre and the closed forms can lose nearly-double roots.
 //
-// F is formed about the span's point nearest f's origin (or the ray's focus),
-// and the span cut to its root radius there, by a compiled program
-// (expr/ray_polynomial_program.hpp), with a proven bound R on its rounding,
-// so F is known as F̂ ± R. The first hit is guarded (roots/polynomial_enclosure.hpp): an extremum of F̂ before
+// F is formed by a compiled program (expr/ray_polynomial_program.hpp) about
+// the span's point nearest f's origin (or the ray's focus), with a proven
+// bound R on its rounding, so F is known as F̂ ± R; a long span is cut to
+// F's root radius about that point. The first hit is guarded (roots/polynomial_enclosure.hpp): an extremum of F̂ before
 // its first root that comes within R of 0 is a graze the arithmetic cannot
 // resolve, and counts as a hit rather than a miss. all_hits is guarded the
 // same way: F̂'s roots and every unresolvable graze, so spans built from it

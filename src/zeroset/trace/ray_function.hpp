@@ -48,9 +48,9 @@ public:
     /// Where along the ray the surface most likely is (NaN: nowhere in
     /// particular — the ray's point nearest f's origin), set after
     /// set_ray(): the polynomial method forms the ray's polynomial about it,
-    /// where its rounding bound is least, and searches only within the
-    /// polynomial's root radius about it (a long span, as an unbounded
-    /// sheet's behind a gate, shrinks to where the surface can be).
+    /// where its rounding bound is least, and cuts a long span to the
+    /// polynomial's root radius about it (an unbounded sheet's behind a
+    /// gate shrinks to where the surface can be).
     void set_focus(double t) { focus_ = t; }
     [[nodiscard]] double focus() const { return focus_; }
     /// |x_d|, rounded up: a length ℓ in space is ℓ / dir_length() in t.
