@@ -1,6 +1,7 @@
 // The POV-Ray importer's objects, camera, lights and materials: each object
 // kind's surface and solid, POV-Ray's coefficient order and transforms, CSG
 // with inverse, clipping, and the finish mapping.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -126,6 +127,15 @@ TEST(PovObjects, BoundedByIsASheetsGate) {
     EXPECT_EQ(sheet.object.gate->radius, 2.0);
     EXPECT_EQ(sheet.object.bounds.enclosing_box().hi.x, 1e4);
     EXPECT_TRUE(sheet.object.open);
+    // A turned box gates by the box around it, and says so.
+    const PovImport turned = import(lit + "quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 "
+                                          "bounded_by { box { -1, 1 rotate 30 * z } } }");
+    ASSERT_TRUE(first_node(turned).object.gate);
+    EXPECT_EQ(first_node(turned).object.gate->kind, Bounds::Kind::Box);
+    EXPECT_NEAR(first_node(turned).object.gate->box.hi.x, std::cos(0.5236) + std::sin(0.5236), 1e-3);
+    EXPECT_EQ(std::ranges::count_if(turned.scene.warnings,
+                                    [](const std::string& w) { return w.find("bounded_by a turned box") != std::string::npos; }),
+              1);
     // On a bounded solid it is not needed: a note, no gate.
     const PovImport ball = import(lit + "sphere { 0, 1 bounded_by { box { -2, 2 } } }");
     EXPECT_FALSE(first_node(ball).object.gate);

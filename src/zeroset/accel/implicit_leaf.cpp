@@ -49,17 +49,9 @@ int octree_depth_for(int footprint_pixels) {
 
 namespace {
 
-/// An open object's bounds narrowed to its clip's solid: nothing is drawn
-/// where the clip is positive, so the box that interval analysis proves
-/// holds the clip's solid holds all that is drawn. Tight bounds matter: the
-/// object's size sets its tolerances and its shadow rays' offset.
+/// An open object's bounds narrowed to its clip's solid (narrowed_to_clip).
 LeafDescription narrowed(LeafDescription d) {
-    if (!d.clip || !d.open || d.bounds.kind == Bounds::Kind::None) return d;
-    const Tape clip(*d.clip);
-    const Box3 given = d.bounds.enclosing_box();
-    const Box3 box = overlap(given, SearchRegion(clip, d.bounds).box());
-    const auto volume = [](const Box3& b) { return b.size().x * b.size().y * b.size().z; };
-    if (box.valid() && volume(box) < volume(given)) d.bounds = Bounds::make_box(box);
+    if (d.clip && d.open) d.bounds = narrowed_to_clip(d.bounds, Tape(*d.clip));
     return d;
 }
 

@@ -214,7 +214,7 @@ void PovParser::object_modifiers(ObjectBuilder& b, const std::function<bool(cons
     }
 }
 
-std::optional<Bounds> PovParser::clip_region(const PovObject& clip, const Mat4& to_local, const PovToken& at, bool exact) {
+std::optional<Bounds> PovParser::clip_region(const PovObject& clip, const Mat4& to_local, const PovToken& at, RegionUse use) {
     if (!clip.shape) return std::nullopt;
     const Mat4 m = to_local * clip.node->transform;
     const Bounds& s = *clip.shape;
@@ -224,9 +224,11 @@ std::optional<Bounds> PovParser::clip_region(const PovObject& clip, const Mat4& 
         const Vec3d a = m.transform_point(s.box.lo), z = m.transform_point(s.box.hi);
         return Bounds::make_box({min(a, z), max(a, z)});
     }
-    if (exact)
-        warn(at, "clipping by a " + std::string(s.kind == Bounds::Kind::Sphere ? "sphere stretched unevenly" : "turned box") +
-                     " is not supported; clipped by the box around it");
+    const std::string shape = s.kind == Bounds::Kind::Sphere ? "sphere stretched unevenly" : "turned box";
+    if (use == RegionUse::Clip) warn(at, "clipping by a " + shape + " is not supported; clipped by the box around it");
+    if (use == RegionUse::Gate)
+        warn(at, "bounded_by a " + shape + " is not supported exactly; the surface is seen by the rays that meet the "
+                 "box around it, more than POV-Ray's");
     return Bounds::make_box(m.transform_box(s.enclosing_box()));
 }
 
@@ -273,7 +275,7 @@ bool PovParser::clip_open(SceneNode& surface, const std::vector<std::pair<const 
         clip = clip ? max(*clip, *g) : *g;
         // A clipping sphere or box inside the bounds is tighter bounds.
         if (object->shape && !object->inverse)
-            if (const auto region = clip_region(*object, m, at, false)) {  // bounds only: the clip itself is exact
+            if (const auto region = clip_region(*object, m, at, RegionUse::Bounds)) {  // the clip itself is exact
                 const Box3 r = region->enclosing_box();
                 if (bounds.contains(r.lo) && bounds.contains(r.hi)) {
                     tighter = region;
@@ -423,7 +425,8 @@ std::shared_ptr<PovObject> PovParser::finish_object(ObjectBuilder& b, std::share
         std::optional<Bounds> region;
         if (node->kind == SceneNode::Kind::Object && node->object.open && !b.bounded_by->object->inverse)
             if (const auto into_leaf = node->transform.inverse())
-                region = clip_region(*b.bounded_by->object, *into_leaf * b.bounded_by->to_local, b.bounded_by->where);
+                region = clip_region(*b.bounded_by->object, *into_leaf * b.bounded_by->to_local, b.bounded_by->where,
+                                     RegionUse::Gate);
         if (region)
             node->object.gate = *region;
         else

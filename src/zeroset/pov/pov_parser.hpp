@@ -219,12 +219,15 @@ private:
     [[nodiscard]] bool is_transform(const PovToken& t) const;
     /// Whether an optional on/off (a number, on, off, true, …) comes next.
     bool starts_optional_switch();
+    /// What a clip_region stands for: a clip, a gate (bounded_by on a
+    /// sheet), or only bounds for a clip written otherwise.
+    enum class RegionUse { Clip, Gate, Bounds };
     /// The solid of a clipping sphere or box, in the space `to_local` maps
     /// its parent's into: exact for a sphere moved, turned and scaled evenly
-    /// and a box moved and scaled; else the box around it, with a warning.
-    /// `exact`: the region is the clip itself (a warning when it is only
-    /// the box around it), not just bounds for a clip written otherwise.
-    std::optional<Bounds> clip_region(const PovObject& clip, const Mat4& to_local, const PovToken& at, bool exact = true);
+    /// and a box moved and scaled; else the box around it — with a warning
+    /// for a clip or a gate, which it then only approximates.
+    std::optional<Bounds> clip_region(const PovObject& clip, const Mat4& to_local, const PovToken& at,
+                                      RegionUse use = RegionUse::Clip);
     /// The solid of a plain object (f ≤ 0 within bounds that cut it) as an
     /// expression of the space `to_local` maps its parent's into; nothing
     /// for CSG, blobs and open objects.

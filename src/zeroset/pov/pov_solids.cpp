@@ -236,7 +236,8 @@ std::shared_ptr<PovObject> PovParser::polynomial(const PovToken& keyword, Object
     // clipped_by in finish_object; a bounded_by sphere or box is its gate.
     o.open = true;
     if (b.bounded_by && !b.bounded_by->object->inverse) {
-        if (const auto region = clip_region(*b.bounded_by->object, b.bounded_by->to_local, b.bounded_by->where)) {
+        if (const auto region =
+                clip_region(*b.bounded_by->object, b.bounded_by->to_local, b.bounded_by->where, RegionUse::Gate)) {
             o.gate = *region;
             b.bounded_by.reset();
         }

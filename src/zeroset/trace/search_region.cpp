@@ -141,6 +141,14 @@ Box3 shrink_to_surface(const Tape& tape, const Box3& box, const ShrinkLimits& li
     return shrunk;
 }
 
+Bounds narrowed_to_clip(const Bounds& bounds, const Tape& clip_tape) {
+    if (bounds.kind == Bounds::Kind::None) return bounds;
+    const Box3 given = bounds.enclosing_box();
+    const Box3 box = overlap(given, SearchRegion(clip_tape, bounds).box());
+    const auto volume = [](const Box3& b) { return b.size().x * b.size().y * b.size().z; };
+    return box.valid() && volume(box) < volume(given) ? Bounds::make_box(box) : bounds;
+}
+
 SearchRegion::SearchRegion(const Tape& tape, const Bounds& bounds) : bounds_(bounds) {
     if (bounds.kind == Bounds::Kind::None)
         throw std::invalid_argument("an implicit surface needs bounds (only a plane may go without: see HalfSpace)");
