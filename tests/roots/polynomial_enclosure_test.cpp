@@ -160,6 +160,49 @@ TEST(PolynomialEnclosure, NoPolynomialWithinTheRadiusVanishesBeyondTheRootRadius
     EXPECT_GT(cut, 1500);  // the bound cuts nearly every such span
 }
 
+// The same with a top coefficient that may be 0 (a ray along which the top
+// form nearly vanishes): the next one leads, and only up to the reach given.
+TEST(PolynomialEnclosure, NoPolynomialVanishesBeyondTheRootRadiusWhenTheTopCoefficientMayBeZero) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int cut = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const int degree = 1 + trial % 5;
+        std::vector<double> value{std::pow(10.0, 3.0 * u(random))};
+        for (int k = 0; k < degree; ++k) {
+            const double root = u(random) * std::pow(10.0, 2.0 * u(random));
+            std::vector<double> next(value.size() + 1, 0.0);
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                next[i + 1] += value[i];
+                next[i] -= root * value[i];
+            }
+            value = next;
+        }
+        std::vector<double> radius(value.size());
+        for (std::size_t i = 0; i < value.size(); ++i) radius[i] = std::abs(value[i]) * std::pow(10.0, -12.0 + 4.0 * u(random));
+        // A top coefficient far below the rest, and its radius above it.
+        const double top = value.back() * std::pow(10.0, -8.0 + 6.0 * u(random));
+        value.push_back(top);
+        radius.push_back(std::abs(top) * (1.0 + std::abs(u(random))));
+        const double within = std::pow(10.0, 2.0 + 2.0 * std::abs(u(random)));
+        const double rho = root_radius({value, radius}, within, within);
+        if (!std::isfinite(rho)) continue;
+        ++cut;
+        // Any polynomial within the radii keeps clear of 0 from ρ to the reach.
+        for (double t = rho; t <= within; t *= 1.07) {
+            for (const double at : {t, -t}) {
+                double fhat = 0.0, r = 0.0;
+                for (std::size_t i = value.size(); i-- > 0;) {
+                    fhat = fhat * at + value[i];
+                    r = r * std::abs(at) + radius[i];
+                }
+                EXPECT_GT(std::abs(fhat), r) << "trial " << trial << " t " << at;
+            }
+        }
+    }
+    EXPECT_GT(cut, 500);  // the lower coefficient leads on many such spans
+}
+
 TEST(PolynomialEnclosure, TheRootRadiusCutsNothingItCannotProve) {
     const std::vector<double> value{-4.0, 0.0, 1.0};  // roots ±2
     EXPECT_EQ(root_radius({value, std::vector<double>{0.0, 0.0, 1.0}}, 1e6, 1e6), std::numeric_limits<double>::infinity())
