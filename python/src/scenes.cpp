@@ -95,14 +95,20 @@ void add_object(Scene& scene, const Expr& surface, const std::string& name, cons
 }  // namespace
 
 void bind_scenes(py::module_& m) {
-    py::class_<Camera>(m, "Camera", "A pinhole camera; fov is the vertical field of view in degrees.")
-        .def(py::init([](Vec3d from, Vec3d at, Vec3d up, double fov) { return Camera{from, at, up, fov}; }),
+    py::class_<Camera>(m, "Camera",
+                       "A pinhole camera; fov is the vertical field of view in degrees, shift_right and shift_up a "
+                       "shifted lens (the image's centre moved off the view axis, in image heights).")
+        .def(py::init([](Vec3d from, Vec3d at, Vec3d up, double fov, double shift_right, double shift_up) {
+                 return Camera{from, at, up, fov, shift_right, shift_up};
+             }),
              py::arg("from_") = Camera{}.from, py::arg("at") = Camera{}.at, py::arg("up") = Camera{}.up,
-             py::arg("fov") = Camera{}.fov_degrees)
+             py::arg("fov") = Camera{}.fov_degrees, py::arg("shift_right") = 0.0, py::arg("shift_up") = 0.0)
         .def_readwrite("from_", &Camera::from)
         .def_readwrite("at", &Camera::at)
         .def_readwrite("up", &Camera::up)
-        .def_readwrite("fov", &Camera::fov_degrees);
+        .def_readwrite("fov", &Camera::fov_degrees)
+        .def_readwrite("shift_right", &Camera::shift_right)
+        .def_readwrite("shift_up", &Camera::shift_up);
 
     py::class_<Light>(m, "Light", "A point light (not attenuated) or a directional one.")
         .def_static(

@@ -188,6 +188,18 @@ TEST(PovScene, CameraLightsAndSettings) {
     EXPECT_EQ(s.scene.ambient, (Vec3d{0.5, 0.5, 0.5}));
     EXPECT_EQ(s.scene.image.reflection_depth, 3);
     EXPECT_EQ(s.scene.image.width, 320);
+    // A direction leaning towards up (trough.pov's camera): a shifted lens,
+    // looking along the part of the direction off the image plane.
+    const PovImport shifted = import(lit + "camera { location -4*z right x*4/3 up y direction <0, 0.1, 1.5> } sphere { 0, 1 }");
+    const Camera& sc = shifted.scene.camera;
+    EXPECT_NEAR(length(sc.at - sc.from - Vec3d{0, 0, 1.5}), 0.0, 1e-12);
+    EXPECT_NEAR(sc.fov_degrees, 2 * std::atan(0.5 / 1.5) * 180 / std::numbers::pi, 1e-9);
+    EXPECT_NEAR(sc.shift_up, 0.1, 1e-12);
+    EXPECT_EQ(sc.shift_right, 0.0);
+    EXPECT_FALSE(warned(shifted, "skewed"));
+    // Up and right not at right angles: a skewed plane, not supported.
+    EXPECT_TRUE(warned(import(lit + "camera { location -4*z right <1.2, 0.5, 0> up y direction z } sphere { 0, 1 }"),
+                       "skewed image plane"));
     // A camera whose right/up ratio is not the image's: a warning.
     EXPECT_TRUE(warned(import(lit + "camera { location -5*z right x up y } sphere { 0, 1 }"), "right/up ratio"));
 }

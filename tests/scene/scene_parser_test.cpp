@@ -103,6 +103,15 @@ TEST(SceneParser, KeysComeInAnyOrderAndLayout) {
     EXPECT_EQ(a.camera.fov_degrees, b.camera.fov_degrees);
 }
 
+TEST(SceneParser, ACameraLensMayBeShifted) {
+    const Scene s = parse("camera { fov 30 shift_right -0.25 shift_up 0.1 }");
+    EXPECT_EQ(s.camera.shift_right, -0.25);
+    EXPECT_EQ(s.camera.shift_up, 0.1);
+    EXPECT_EQ(parse("").camera.shift_up, 0.0);
+    EXPECT_EQ(error_of("camera { shift_up 2000 }"),
+              "scene.zs:1:19: shift_up must be between -1000 and 1000 image heights, but it is 2000");
+}
+
 TEST(SceneParser, EmptySceneIsValid) {
     const Scene s = parse("# nothing but a comment\n");
     EXPECT_TRUE(s.nodes.empty());
@@ -123,12 +132,12 @@ TEST(SceneParser, StatementErrors) {
     EXPECT_EQ(error_of("camera { fov 40\n"),
               "scene.zs:2:1: expected '}' to close the camera block opened at line 1, column 1, but found end of file");
     EXPECT_EQ(error_of("camera { 40 }"),
-              "scene.zs:1:10: expected a key (from, at, up or fov) or '}' but found '40'");
+              "scene.zs:1:10: expected a key (from, at, up, fov, shift_right or shift_up) or '}' but found '40'");
 }
 
 TEST(SceneParser, UnknownAndRepeatedKeys) {
     EXPECT_EQ(error_of("camera { from (0, 0, -5)  look (0, 0, 0) }"),
-              "scene.zs:1:27: unknown key 'look' in the camera block (expected from, at, up or fov)");
+              "scene.zs:1:27: unknown key 'look' in the camera block (expected from, at, up, fov, shift_right or shift_up)");
     EXPECT_EQ(error_of("image { width 10\n  width 20 }"),
               "scene.zs:2:3: 'width' is already set in this image block (at line 1, column 9)");
     EXPECT_EQ(error_of("object { surface x  material { color (1, 1, 1)  colour (1, 0, 0) } }"),

@@ -39,7 +39,7 @@ TEST(SceneWriter, EveryShippedSceneReadsBackAsTheSameImage) {
 }
 
 TEST(SceneWriter, WritesEachKindOfNode) {
-    const Scene s = parse("camera { from (1, 2, -5) at (0, 0.5, 0) fov 35 }\n"
+    const Scene s = parse("camera { from (1, 2, -5) at (0, 0.5, 0) fov 35 shift_up 0.125 }\n"
                           "light { direction (1, -1, 1) color (0.5, 0.5, 0.5) shadows off }\n"
                           "object \"o\" { surface x^2 + (-y)^2 + z^2 - 1 bounds sphere((0, 0, 0), 2) method interval open on "
                           "clip x - 0.5 gate box((-1, -1, -1), (1, 1, 0.5)) material { color (x, 0, 1) } translate (1, 0, 0) }\n"
@@ -53,6 +53,8 @@ TEST(SceneWriter, WritesEachKindOfNode) {
     EXPECT_EQ(text.rfind("# a header\n", 0), 0U) << text;
     const Scene t = parse(text);
     EXPECT_EQ(write_scene(t, "a header"), text);  // a fixed point: nothing lost or changed
+    EXPECT_EQ(t.camera.shift_up, 0.125);
+    EXPECT_EQ(t.camera.shift_right, 0.0);
     const auto objects = placed_objects(t);
     ASSERT_EQ(objects.size(), 8U);  // the sweep's 3 pieces are 3 sweeps in a group, the difference has 2
     EXPECT_TRUE(objects[0].object().open);

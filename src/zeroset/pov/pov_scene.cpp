@@ -163,10 +163,23 @@ void PovParser::camera_block(const PovToken& keyword) {
         up = normalize(cross(forward, right)) * up_length;
         direction = forward * length(direction);
     }
+    // A direction that leans towards up or right, with up and right at right
+    // angles, is a shifted lens: the image plane stays at right angles to
+    // the part of the direction off both, and its centre moves.
+    Vec3d axis = direction;
+    double shift_right = 0.0, shift_up = 0.0;
+    const bool plane_square = std::abs(dot(normalize(up), normalize(right))) <= 1e-9;
     const double skew = std::max(std::abs(dot(normalize(up), normalize(direction))), std::abs(dot(normalize(right), normalize(direction))));
-    if (skew > 1e-9)
-        warn(keyword, "a camera whose direction is not at right angles to its up and right vectors (a skewed image "
-                      "plane) is not supported; rendered with the plane at right angles to the direction");
+    if (skew > 1e-9 && plane_square) {
+        axis = direction - normalize(up) * dot(direction, normalize(up)) - normalize(right) * dot(direction, normalize(right));
+        if (!(length(axis) > 1e-9 * length(direction))) fail(keyword, "the camera's direction lies in its image plane");
+        // In the basis the renderer builds (its right is up × axis).
+        shift_right = dot(direction, normalize(cross(up, axis))) / up_length;
+        shift_up = dot(direction, normalize(up)) / up_length;
+    } else if (!plane_square) {
+        warn(keyword, "a camera whose up and right vectors are not at right angles (a skewed image plane) is not "
+                      "supported; rendered with the plane at right angles to the direction");
+    }
     if (right_handed)
         warn(keyword, "a right-handed camera (right = -x…) is not supported; rendered left-handed, mirrored");
     const double aspect = right_length / up_length, image = double(options_.width) / double(options_.height);
@@ -175,10 +188,12 @@ void PovParser::camera_block(const PovToken& keyword) {
                           std::to_string(image) + "); zeroset draws square pixels, so the image is not stretched as POV-Ray's");
     Camera& c = result_.scene.camera;
     c.from = moved.transform_point(location);
-    const Vec3d forward = moved.transform_vector(direction);
+    const Vec3d forward = moved.transform_vector(axis);
     c.at = c.from + forward;
     c.up = moved.transform_vector(up);
-    c.fov_degrees = 2.0 * std::atan(0.5 * up_length / length(direction)) / radians_per_degree;
+    c.fov_degrees = 2.0 * std::atan(0.5 * up_length / length(axis)) / radians_per_degree;
+    c.shift_right = shift_right;
+    c.shift_up = shift_up;
 }
 
 Light PovParser::light_block(const PovToken& keyword) {

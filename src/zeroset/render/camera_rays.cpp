@@ -1,4 +1,5 @@
-// Pinhole camera basis from from/at/up and the vertical field of view.
+// Pinhole camera basis from from/at/up, the vertical field of view and the
+// lens shift.
 #include "zeroset/render/camera_rays.hpp"
 
 #include <algorithm>
@@ -14,8 +15,11 @@ CameraRays::CameraRays(const Camera& camera, int width, int height)
     up_ = cross(forward_, right_);
     half_height_ = std::tan(camera.fov_degrees * std::numbers::pi / 360.0);
     half_width_ = half_height_ * static_cast<double>(width) / static_cast<double>(height);
+    shift_u_ = camera.shift_right * 2.0 * half_height_;
+    shift_v_ = camera.shift_up * 2.0 * half_height_;
 }
 
+// (The lens shift moves the projections, not their extent.)
 double CameraRays::pixel_extent(std::span<const Vec3d> points) const {
     double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
     for (const Vec3d& p : points) {
@@ -42,9 +46,9 @@ CameraFrustum CameraRays::frustum(int x0, int y0, int x1, int y1) const {
     f.right = right_;
     f.up = up_;
     // As ray() maps a pixel position to u and v.
-    f.u0 = (2.0 * x0 / width_ - 1.0) * half_width_;
+    f.u0 = (2.0 * x0 / width_ - 1.0) * half_width_ + shift_u_;
     f.du = 2.0 * half_width_ / width_;
-    f.v0 = (1.0 - 2.0 * y0 / height_) * half_height_;
+    f.v0 = (1.0 - 2.0 * y0 / height_) * half_height_ + shift_v_;
     f.dv = -2.0 * half_height_ / height_;
     f.columns = x1 - x0;
     f.rows = y1 - y0;
@@ -52,8 +56,8 @@ CameraFrustum CameraRays::frustum(int x0, int y0, int x1, int y1) const {
 }
 
 Ray CameraRays::ray(int px, int py, double sx, double sy) const {
-    const double u = (2.0 * (px + sx) / width_ - 1.0) * half_width_;
-    const double v = (1.0 - 2.0 * (py + sy) / height_) * half_height_;
+    const double u = (2.0 * (px + sx) / width_ - 1.0) * half_width_ + shift_u_;
+    const double v = (1.0 - 2.0 * (py + sy) / height_) * half_height_ + shift_v_;
     return {eye_, normalize(forward_ + right_ * u + up_ * v)};
 }
 

@@ -30,6 +30,7 @@ private:
     Vec3d eye_, forward_, right_, up_;
     double half_height_ = 1.0;  // tan(fov/2)
     double half_width_ = 1.0;
+    double shift_u_ = 0.0, shift_v_ = 0.0;  // the image's centre on the plane at distance 1 (Camera::shift_right, shift_up)
     int width_, height_;
 };
 

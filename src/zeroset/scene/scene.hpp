@@ -30,6 +30,12 @@ struct Camera {
     Vec3d at{0.0, 0.0, 0.0};
     Vec3d up{0.0, 1.0, 0.0};
     double fov_degrees = 40.0;
+    /// A shifted lens: the image's centre moved off the view axis by these
+    /// many image heights, right and up, its plane still at right angles to
+    /// at − from (verticals stay parallel; POV-Ray's camera whose direction
+    /// leans towards its up or right vector).
+    double shift_right = 0.0;
+    double shift_up = 0.0;
 };
 
 struct Light {

@@ -19,7 +19,7 @@ constexpr std::array<std::string_view, 18> statement_names{
     "image", "camera", "light",        "background", "ambient",  "let",   "include", "object", "blob", "fractal",
     "sweep", "group",  "union",        "intersection", "difference", "instance", "shape", "for"};
 constexpr std::array<std::string_view, 5> image_keys{"width", "height", "spp", "antialias", "reflection_depth"};
-constexpr std::array<std::string_view, 4> camera_keys{"from", "at", "up", "fov"};
+constexpr std::array<std::string_view, 6> camera_keys{"from", "at", "up", "fov", "shift_right", "shift_up"};
 constexpr std::array<std::string_view, 4> light_keys{"from", "direction", "color", "shadows"};
 constexpr std::array<std::string_view, 6> material_keys{"color", "ambient", "diffuse", "specular", "shininess", "reflection"};
 
@@ -127,6 +127,12 @@ void SceneParser::camera(const Token& keyword) {
             camera.at = vector("the camera target").value;
         } else if (key.text == "up") {
             camera.up = vector("the camera up vector").value;
+        } else if (key.text == "shift_right" || key.text == "shift_up") {
+            const auto [shift, where] = number(key.text);
+            if (!(std::abs(shift) <= 1e3))
+                in_->fail(where, std::string(key.text) + " must be between -1000 and 1000 image heights, but it is " +
+                                     format_number(shift));
+            (key.text == "shift_right" ? camera.shift_right : camera.shift_up) = shift;
         } else {
             const auto [fov, where] = number("fov");
             if (!(fov > 0.0 && fov < 180.0))

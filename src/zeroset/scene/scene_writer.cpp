@@ -227,7 +227,8 @@ std::string write_scene(const Scene& scene, const std::string& header) {
            std::to_string(i.reflection_depth) + " }");
     const Camera& c = scene.camera;
     w.line("camera { from " + vector(c.from) + "  at " + vector(c.at) + "  up " + vector(c.up) + "  fov " +
-           number(c.fov_degrees) + " }");
+           number(c.fov_degrees) + (c.shift_right != 0.0 ? "  shift_right " + number(c.shift_right) : "") +
+           (c.shift_up != 0.0 ? "  shift_up " + number(c.shift_up) : "") + " }");
     for (const Light& l : scene.lights)
         w.line("light { " + (l.kind == Light::Kind::Point ? "from " + vector(l.position) : "direction " + vector(l.direction)) +
                "  color " + vector(l.color) + "  shadows " + (l.casts_shadows ? "on" : "off") + " }");
