@@ -92,6 +92,13 @@ void add_object(Scene& scene, const Expr& surface, const std::string& name, cons
     scene.nodes.push_back(std::move(node));
 }
 
+/// A lens shift as the scene language takes it (−1000 to 1000 image heights).
+double checked_shift(double shift, const char* name) {
+    if (!(std::abs(shift) <= 1e3))
+        throw py::value_error(std::string(name) + " must be between -1000 and 1000 image heights");
+    return shift;
+}
+
 }  // namespace
 
 void bind_scenes(py::module_& m) {
@@ -99,7 +106,7 @@ void bind_scenes(py::module_& m) {
                        "A pinhole camera; fov is the vertical field of view in degrees, shift_right and shift_up a "
                        "shifted lens (the image's centre moved off the view axis, in image heights).")
         .def(py::init([](Vec3d from, Vec3d at, Vec3d up, double fov, double shift_right, double shift_up) {
-                 return Camera{from, at, up, fov, shift_right, shift_up};
+                 return Camera{from, at, up, fov, checked_shift(shift_right, "shift_right"), checked_shift(shift_up, "shift_up")};
              }),
              py::arg("from_") = Camera{}.from, py::arg("at") = Camera{}.at, py::arg("up") = Camera{}.up,
              py::arg("fov") = Camera{}.fov_degrees, py::arg("shift_right") = 0.0, py::arg("shift_up") = 0.0)
@@ -107,8 +114,12 @@ void bind_scenes(py::module_& m) {
         .def_readwrite("at", &Camera::at)
         .def_readwrite("up", &Camera::up)
         .def_readwrite("fov", &Camera::fov_degrees)
-        .def_readwrite("shift_right", &Camera::shift_right)
-        .def_readwrite("shift_up", &Camera::shift_up);
+        .def_property(
+            "shift_right", [](const Camera& c) { return c.shift_right; },
+            [](Camera& c, double v) { c.shift_right = checked_shift(v, "shift_right"); })
+        .def_property(
+            "shift_up", [](const Camera& c) { return c.shift_up; },
+            [](Camera& c, double v) { c.shift_up = checked_shift(v, "shift_up"); });
 
     py::class_<Light>(m, "Light", "A point light (not attenuated) or a directional one.")
         .def_static(

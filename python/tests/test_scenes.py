@@ -121,3 +121,17 @@ def test_the_clock_is_read_when_the_scene_is():
     text = 'let r = 1 + clock\nobject "s" { surface x^2 + y^2 + z^2 - r^2 }\n'
     assert zs.parse_scene(text).surface()(1, 0, 0) == 0
     assert zs.parse_scene(text, clock=0.5).surface()(1.5, 0, 0) == 0
+
+
+def test_a_shifted_lens_moves_the_picture():
+    # The ball at the centre; the lens shifted up by a quarter of the image
+    # height shows it a quarter of the image lower.
+    centred = hit_mask(ball_scene())
+    scene = ball_scene()
+    scene.camera = zs.Camera(from_=(0, 0, -6), at=(0, 0, 0), fov=40, shift_up=0.25)
+    shifted = hit_mask(scene)
+    rows = np.nonzero(centred.any(axis=1))[0]
+    moved_rows = np.nonzero(shifted.any(axis=1))[0]
+    assert abs((moved_rows.mean() - rows.mean()) - 0.25 * 65) < 2
+    with pytest.raises(ValueError, match="shift_up must be between"):
+        scene.camera.shift_up = float("nan")

@@ -197,6 +197,15 @@ TEST(PovScene, CameraLightsAndSettings) {
     EXPECT_NEAR(sc.shift_up, 0.1, 1e-12);
     EXPECT_EQ(sc.shift_right, 0.0);
     EXPECT_FALSE(warned(shifted, "skewed"));
+    // Measured after the camera's transforms: a stretch along y doubles the
+    // up vector and the lean.
+    const Camera& stretched =
+        import(lit + "camera { location -4*z right x*4/3 up y direction <0, 0.1, 1.5> scale <1, 2, 1> } sphere { 0, 1 }")
+            .scene.camera;
+    EXPECT_NEAR(stretched.fov_degrees, 2 * std::atan(1.0 / 1.5) * 180 / std::numbers::pi, 1e-9);
+    EXPECT_NEAR(stretched.shift_up, 0.1, 1e-12);
+    EXPECT_THROW(import(lit + "camera { location -4*z right x*4/3 up y direction <0, 1500, 1> } sphere { 0, 1 }"),
+                 SceneError);
     // Up and right not at right angles: a skewed plane, not supported.
     EXPECT_TRUE(warned(import(lit + "camera { location -4*z right <1.2, 0.5, 0> up y direction z } sphere { 0, 1 }"),
                        "skewed image plane"));

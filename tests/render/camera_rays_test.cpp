@@ -29,6 +29,15 @@ TEST(CameraRays, AShiftedLensMovesTheImagesCentreOffTheAxis) {
     EXPECT_NEAR(top.dir.x / top.dir.z, bottom.dir.x / bottom.dir.z, 1e-12);
 }
 
+TEST(CameraRays, AShiftedImagesCentrePixelIsSmallerSeenFromTheEye) {
+    Camera camera;
+    camera.fov_degrees = 60.0;
+    const double on_axis = CameraRays(camera, 100, 100).footprint_radius();
+    camera.shift_up = 1.0;  // the centre 49° off the axis: a pixel there subtends cos³θ as much
+    const double cos_theta = 1.0 / std::hypot(1.0, 2.0 * std::tan(std::numbers::pi / 6.0));
+    EXPECT_NEAR(CameraRays(camera, 100, 100).footprint_radius() / on_axis, std::pow(cos_theta, 1.5), 1e-12);
+}
+
 TEST(CameraRays, ATilesFrustumHoldsItsShiftedRays) {
     Camera camera;
     camera.shift_up = 0.3;

@@ -163,35 +163,41 @@ void PovParser::camera_block(const PovToken& keyword) {
         up = normalize(cross(forward, right)) * up_length;
         direction = forward * length(direction);
     }
+    // The vectors as the camera's transforms leave them (a stretch changes
+    // their lengths and angles, so everything below is measured after it).
+    const Vec3d d = moved.transform_vector(direction), u = moved.transform_vector(up), r = moved.transform_vector(right);
+    if (!(length(d) > 0.0 && length(u) > 0.0 && length(r) > 0.0))
+        fail(keyword, "the camera's transforms flatten its right, up or direction to 0");
     // A direction that leans towards up or right, with up and right at right
     // angles, is a shifted lens: the image plane stays at right angles to
     // the part of the direction off both, and its centre moves.
-    Vec3d axis = direction;
+    Vec3d axis = d;
     double shift_right = 0.0, shift_up = 0.0;
-    const bool plane_square = std::abs(dot(normalize(up), normalize(right))) <= 1e-9;
-    const double skew = std::max(std::abs(dot(normalize(up), normalize(direction))), std::abs(dot(normalize(right), normalize(direction))));
+    const bool plane_square = std::abs(dot(normalize(u), normalize(r))) <= 1e-9;
+    const double skew = std::max(std::abs(dot(normalize(u), normalize(d))), std::abs(dot(normalize(r), normalize(d))));
     if (skew > 1e-9 && plane_square) {
-        axis = direction - normalize(up) * dot(direction, normalize(up)) - normalize(right) * dot(direction, normalize(right));
-        if (!(length(axis) > 1e-9 * length(direction))) fail(keyword, "the camera's direction lies in its image plane");
+        axis = d - normalize(u) * dot(d, normalize(u)) - normalize(r) * dot(d, normalize(r));
+        if (!(length(axis) > 1e-9 * length(d))) fail(keyword, "the camera's direction lies in its image plane");
         // In the basis the renderer builds (its right is up × axis).
-        shift_right = dot(direction, normalize(cross(up, axis))) / up_length;
-        shift_up = dot(direction, normalize(up)) / up_length;
+        shift_right = dot(d, normalize(cross(u, axis))) / length(u);
+        shift_up = dot(d, normalize(u)) / length(u);
+        if (!(std::abs(shift_right) <= 1e3 && std::abs(shift_up) <= 1e3))
+            fail(keyword, "the camera's direction leans more than 1000 image heights off its image plane's normal");
     } else if (!plane_square) {
         warn(keyword, "a camera whose up and right vectors are not at right angles (a skewed image plane) is not "
                       "supported; rendered with the plane at right angles to the direction");
     }
     if (right_handed)
         warn(keyword, "a right-handed camera (right = -x…) is not supported; rendered left-handed, mirrored");
-    const double aspect = right_length / up_length, image = double(options_.width) / double(options_.height);
+    const double aspect = length(r) / length(u), image = double(options_.width) / double(options_.height);
     if (std::abs(aspect - image) > 0.01 * image)
         warn(keyword, "the camera's right/up ratio (" + std::to_string(aspect) + ") differs from the image's (" +
                           std::to_string(image) + "); zeroset draws square pixels, so the image is not stretched as POV-Ray's");
     Camera& c = result_.scene.camera;
     c.from = moved.transform_point(location);
-    const Vec3d forward = moved.transform_vector(axis);
-    c.at = c.from + forward;
-    c.up = moved.transform_vector(up);
-    c.fov_degrees = 2.0 * std::atan(0.5 * up_length / length(axis)) / radians_per_degree;
+    c.at = c.from + axis;
+    c.up = u;
+    c.fov_degrees = 2.0 * std::atan(0.5 * length(u) / length(axis)) / radians_per_degree;
     c.shift_right = shift_right;
     c.shift_up = shift_up;
 }

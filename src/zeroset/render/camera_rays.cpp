@@ -35,8 +35,11 @@ double CameraRays::pixel_extent(std::span<const Vec3d> points) const {
 }
 
 double CameraRays::footprint_radius() const {
-    const double pixel_side = 2.0 * half_height_ / height_;  // at distance 1 on the axis
-    return pixel_side / std::sqrt(std::numbers::pi);
+    const double pixel_side = 2.0 * half_height_ / height_;  // on the image plane at distance 1
+    // The image's centre lies off the axis by the lens shift, at an angle θ
+    // where a pixel subtends pixel_side²·cos³θ.
+    const double cos_theta = 1.0 / std::sqrt(1.0 + shift_u_ * shift_u_ + shift_v_ * shift_v_);
+    return pixel_side * std::pow(cos_theta, 1.5) / std::sqrt(std::numbers::pi);
 }
 
 CameraFrustum CameraRays::frustum(int x0, int y0, int x1, int y1) const {
