@@ -61,6 +61,28 @@ TEST(Bounds, SphereClip) {
     EXPECT_FALSE(b.clip({{0, 0, 0}, {0, 0, 1}}, 7.5, 9.0).has_value());
 }
 
+// Ordinary lengths are clipped without the scaling below, which changes no
+// bit: the same rays 2^450 times larger (scaled) give the same spans, 2^450
+// times larger, exactly.
+TEST(Bounds, SphereClipIsTheSameWithAndWithoutScaling) {
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> u(-3.0, 3.0);
+    constexpr double big = 0x1p450;
+    int met = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3d c{u(random), u(random), u(random)}, o{u(random), u(random), u(random)}, d{u(random), u(random), u(random)};
+        const double r = std::abs(u(random)) + 0.1;
+        const auto plain = Bounds::make_sphere(c, r).clip({o, d}, -INFINITY, INFINITY);
+        const auto scaled = Bounds::make_sphere(c * big, r * big).clip({o * big, d}, -INFINITY, INFINITY);
+        ASSERT_EQ(plain.has_value(), scaled.has_value()) << i;
+        if (!plain) continue;
+        ++met;
+        EXPECT_EQ(plain->t0 * big, scaled->t0) << i;
+        EXPECT_EQ(plain->t1 * big, scaled->t1) << i;
+    }
+    EXPECT_GT(met, 200);
+}
+
 // Squares of radii and offsets past 10¹⁵⁴ overflow, and below 10⁻¹⁶² vanish:
 // the clip works in units where neither happens (a soak run found the span
 // of a 10³⁰⁰ sphere was [−∞, NaN], and every ray's point NaN).

@@ -78,20 +78,27 @@ struct Bounds {
         const Vec3d offset = ray.origin - center;
         const double k = std::max(radius, max_abs(offset)), m = max_abs(ray.dir);
         if (!(m > 0.0) || !(k > 0.0) || !std::isfinite(k) || !std::isfinite(m)) return std::nullopt;
-        const int ek = binary_exponent(k), em = binary_exponent(m);
-        const auto scaled = [](const Vec3d& v, int e) {
-            return Vec3d{times_power_of_two(v.x, -e), times_power_of_two(v.y, -e), times_power_of_two(v.z, -e)};
+        // Lengths between 2^−400 and 2^400 need no scaling: their squares
+        // stay in range, and scaling by powers of two changes no bit of the
+        // result (it would only move where a component 2^−600 of the largest
+        // turns subnormal).
+        constexpr double tiny = 0x1p-400, huge = 0x1p400;
+        const bool ordinary = k > tiny && k < huge && m > tiny && m < huge;
+        const int ek = ordinary ? 0 : binary_exponent(k), em = ordinary ? 0 : binary_exponent(m);
+        const auto scaled = [ordinary](const Vec3d& v, int e) {
+            return ordinary ? v : Vec3d{times_power_of_two(v.x, -e), times_power_of_two(v.y, -e), times_power_of_two(v.z, -e)};
         };
         const Vec3d oc = scaled(offset, ek), d = scaled(ray.dir, em);
-        const double r = times_power_of_two(radius, -ek);
+        const double r = ordinary ? radius : times_power_of_two(radius, -ek);
         const double a = dot(d, d), b = dot(oc, d), c = dot(oc, oc) - r * r;
         const double disc = b * b - a * c;
         if (disc < 0.0) return std::nullopt;
         const double s = std::sqrt(disc);
         // Numerically stable pair of roots, in t = t' · k / m.
         const double q = b >= 0.0 ? -(b + s) : -(b - s);
-        double t0 = times_power_of_two(q / a, ek - em);
-        double t1 = times_power_of_two(q != 0.0 ? c / q : q / a, ek - em);
+        double t0 = ordinary ? q / a : times_power_of_two(q / a, ek - em);
+        double t1 = q != 0.0 ? c / q : q / a;
+        if (!ordinary) t1 = times_power_of_two(t1, ek - em);
         if (std::isnan(t0) || std::isnan(t1)) return std::nullopt;  // 0 · ∞: a tangent ray with a tiny direction
         if (t0 > t1) std::swap(t0, t1);
         t0 = std::max(t0, t_min);
