@@ -3,10 +3,12 @@
 // bracketed Newton that both rely on (roots/monotone_pieces.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "zeroset/roots/fast_polynomial.hpp"
@@ -118,41 +120,56 @@ TEST(PolynomialEnclosure, TheBoundGrowsWithTheDistanceFromTheCentre) {
     EXPECT_EQ(far, enclosure_bound({value, radius}, 10.0));
 }
 
+/// (t − r₁)…(t − r_n)·scale, its roots spread over several orders of
+/// magnitude, with radii 10⁻¹² to 10⁻⁸ of its coefficients.
+struct RandomEnclosure {
+    std::vector<double> value, radius;
+    double farthest = 0.0;  // the largest |root|
+};
+
+RandomEnclosure random_enclosure(std::mt19937& random, int degree) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    RandomEnclosure e;
+    e.value = {std::pow(10.0, 3.0 * u(random))};
+    for (int k = 0; k < degree; ++k) {
+        const double root = u(random) * std::pow(10.0, 2.0 * u(random));
+        e.farthest = std::max(e.farthest, std::abs(root));
+        std::vector<double> next(e.value.size() + 1, 0.0);
+        for (std::size_t i = 0; i < e.value.size(); ++i) {
+            next[i + 1] += e.value[i];
+            next[i] -= root * e.value[i];
+        }
+        e.value = next;
+    }
+    e.radius.resize(e.value.size());
+    for (std::size_t i = 0; i < e.value.size(); ++i) e.radius[i] = std::abs(e.value[i]) * std::pow(10.0, -12.0 + 4.0 * u(random));
+    return e;
+}
+
+/// F̂(t) and Σ rᵢ|t|ⁱ: where |F̂| exceeds the second, no F within the radii vanishes.
+std::pair<double, double> value_and_radius_at(const RandomEnclosure& e, double t) {
+    double fhat = 0.0, r = 0.0;
+    for (std::size_t i = e.value.size(); i-- > 0;) {
+        fhat = fhat * t + e.value[i];
+        r = r * std::abs(t) + e.radius[i];
+    }
+    return {fhat, r};
+}
+
 TEST(PolynomialEnclosure, NoPolynomialWithinTheRadiusVanishesBeyondTheRootRadius) {
     std::mt19937 random(7);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
     int cut = 0;
     for (int trial = 0; trial < 2000; ++trial) {
-        // (t − r₁)…(t − r_n)·scale, its roots spread over several orders of magnitude.
-        const int degree = 1 + trial % 6;
-        std::vector<double> value{std::pow(10.0, 3.0 * u(random))};
-        double farthest = 0.0;
-        for (int k = 0; k < degree; ++k) {
-            const double root = u(random) * std::pow(10.0, 2.0 * u(random));
-            farthest = std::max(farthest, std::abs(root));
-            std::vector<double> next(value.size() + 1, 0.0);
-            for (std::size_t i = 0; i < value.size(); ++i) {
-                next[i + 1] += value[i];
-                next[i] -= root * value[i];
-            }
-            value = next;
-        }
-        std::vector<double> radius(value.size());
-        for (std::size_t i = 0; i < value.size(); ++i) radius[i] = std::abs(value[i]) * std::pow(10.0, -12.0 + 4.0 * u(random));
-        const PolynomialEnclosure f{value, radius};
+        const RandomEnclosure e = random_enclosure(random, 1 + trial % 6);
         const double within = 1e6;
-        const double rho = root_radius(f, within, within);
+        const double rho = root_radius({e.value, e.radius}, within, within);
         if (!std::isfinite(rho)) continue;
         ++cut;
-        EXPECT_GE(rho, farthest) << "trial " << trial;  // F̂'s own roots lie inside
+        EXPECT_GE(rho, e.farthest) << "trial " << trial;  // F̂'s own roots lie inside
         // Beyond ρ, |F̂| exceeds what the radius allows F to differ by: no root of F.
         for (const double beyond : {1.0, 1.001, 1.5, 4.0, 1e3}) {
             for (const double t : {rho * beyond, -rho * beyond}) {
-                double fhat = 0.0, r = 0.0;
-                for (std::size_t i = value.size(); i-- > 0;) {
-                    fhat = fhat * t + value[i];
-                    r = r * std::abs(t) + radius[i];
-                }
+                const auto [fhat, r] = value_and_radius_at(e, t);
                 EXPECT_GT(std::abs(fhat), r) << "trial " << trial << " t " << t;
             }
         }
@@ -167,35 +184,19 @@ TEST(PolynomialEnclosure, NoPolynomialVanishesBeyondTheRootRadiusWhenTheTopCoeff
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int cut = 0;
     for (int trial = 0; trial < 2000; ++trial) {
-        const int degree = 1 + trial % 5;
-        std::vector<double> value{std::pow(10.0, 3.0 * u(random))};
-        for (int k = 0; k < degree; ++k) {
-            const double root = u(random) * std::pow(10.0, 2.0 * u(random));
-            std::vector<double> next(value.size() + 1, 0.0);
-            for (std::size_t i = 0; i < value.size(); ++i) {
-                next[i + 1] += value[i];
-                next[i] -= root * value[i];
-            }
-            value = next;
-        }
-        std::vector<double> radius(value.size());
-        for (std::size_t i = 0; i < value.size(); ++i) radius[i] = std::abs(value[i]) * std::pow(10.0, -12.0 + 4.0 * u(random));
+        RandomEnclosure e = random_enclosure(random, 1 + trial % 5);
         // A top coefficient far below the rest, and its radius above it.
-        const double top = value.back() * std::pow(10.0, -8.0 + 6.0 * u(random));
-        value.push_back(top);
-        radius.push_back(std::abs(top) * (1.0 + std::abs(u(random))));
+        const double top = e.value.back() * std::pow(10.0, -8.0 + 6.0 * u(random));
+        e.value.push_back(top);
+        e.radius.push_back(std::abs(top) * (1.0 + std::abs(u(random))));
         const double within = std::pow(10.0, 2.0 + 2.0 * std::abs(u(random)));
-        const double rho = root_radius({value, radius}, within, within);
+        const double rho = root_radius({e.value, e.radius}, within, within);
         if (!std::isfinite(rho)) continue;
         ++cut;
         // Any polynomial within the radii keeps clear of 0 from ρ to the reach.
         for (double t = rho; t <= within; t *= 1.07) {
             for (const double at : {t, -t}) {
-                double fhat = 0.0, r = 0.0;
-                for (std::size_t i = value.size(); i-- > 0;) {
-                    fhat = fhat * at + value[i];
-                    r = r * std::abs(at) + radius[i];
-                }
+                const auto [fhat, r] = value_and_radius_at(e, at);
                 EXPECT_GT(std::abs(fhat), r) << "trial " << trial << " t " << at;
             }
         }

@@ -51,7 +51,7 @@ namespace {
 
 /// An open object's bounds narrowed to its clip's solid (narrowed_to_clip).
 LeafDescription narrowed(LeafDescription d) {
-    if (d.clip && d.open) d.bounds = narrowed_to_clip(d.bounds, Tape(*d.clip));
+    d.bounds = narrowed_to_clip(d.bounds, d.clip, d.open);
     return d;
 }
 

@@ -42,12 +42,6 @@ void run_method(MethodOutcome& o, const Tape& tape, const Ray& ray, Span span, d
     o.all_hits_evaluations = all_counters.evaluations();
 }
 
-/// The bounds the renderer searches (ImplicitLeaf): an open object's
-/// narrowed to its clip's solid.
-Bounds searched_bounds(const Object& o) {
-    return o.open && o.clip ? narrowed_to_clip(o.bounds, Tape(*o.clip)) : o.bounds;
-}
-
 }  // namespace
 
 RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray, std::span<const Method> methods,
@@ -69,7 +63,9 @@ std::string method_label(const MethodOutcome& outcome) {
 }
 
 ObjectProbe::ObjectProbe(const PlacedObject& placed, std::optional<double> newton_from)
-    : placed_(placed), tape_(surface_of(placed.object())), region_(tape_, searched_bounds(placed.object())),
+    : placed_(placed),
+      tape_(surface_of(placed.object())),
+      region_(tape_, narrowed_to_clip(placed.object().bounds, placed.object().clip, placed.object().open)),  // as ImplicitLeaf
       settings_(settings_for_scale(gated_scale(region_.scale(), placed.object().gate))) {
     settings_.newton_start = newton_from;
 }

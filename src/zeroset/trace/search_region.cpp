@@ -141,10 +141,10 @@ Box3 shrink_to_surface(const Tape& tape, const Box3& box, const ShrinkLimits& li
     return shrunk;
 }
 
-Bounds narrowed_to_clip(const Bounds& bounds, const Tape& clip_tape) {
-    if (bounds.kind == Bounds::Kind::None) return bounds;
+Bounds narrowed_to_clip(const Bounds& bounds, const std::optional<Expr>& clip, bool open) {
+    if (!clip || !open || bounds.kind == Bounds::Kind::None) return bounds;
     const Box3 given = bounds.enclosing_box();
-    const Box3 box = overlap(given, SearchRegion(clip_tape, bounds).box());
+    const Box3 box = overlap(given, SearchRegion(Tape(*clip), bounds).box());
     const auto volume = [](const Box3& b) { return b.size().x * b.size().y * b.size().z; };
     return box.valid() && volume(box) < volume(given) ? Bounds::make_box(box) : bounds;
 }

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "zeroset/expr/expr.hpp"
 #include "zeroset/expr/tape.hpp"
 #include "zeroset/math/box3.hpp"
 #include "zeroset/trace/bounds.hpp"
@@ -39,12 +40,13 @@ struct ShrinkLimits {
 /// proven. `tape` is f.
 Box3 shrink_to_surface(const Tape& tape, const Box3& box, const ShrinkLimits& limits = {});
 
-/// An open object's bounds narrowed to its clip's solid (`clip_tape`):
-/// nothing is drawn where the clip is positive, so the box that interval
-/// analysis proves holds the clip's solid holds all that is drawn. Tight
-/// bounds matter: the object's size sets its tolerances and its shadow
-/// rays' offset. The bounds themselves when that box is no smaller.
-Bounds narrowed_to_clip(const Bounds& bounds, const Tape& clip_tape);
+/// The bounds an object is searched in: an open object's narrowed to its
+/// clip's solid — nothing is drawn where the clip is positive, so the box
+/// that interval analysis proves holds the clip's solid holds all that is
+/// drawn. Tight bounds matter: the object's size sets its tolerances and
+/// its shadow rays' offset. The bounds themselves when that box is no
+/// smaller, or the object is not open and clipped.
+Bounds narrowed_to_clip(const Bounds& bounds, const std::optional<Expr>& clip, bool open);
 
 class SearchRegion {
 public:
