@@ -83,6 +83,23 @@ TEST(SearchRegion, ProofsSplitTheSideThatTightensThem) {
                                               << shrunk.hi.z << " " << shrunk.lo.x << " " << shrunk.hi.x;
 }
 
+TEST(SearchRegion, PassesStopWhenTheyNoLongerHalveTheBox) {
+    // grafbic.pov's quartic in ±10⁴: interval bounds creep in on its tail
+    // (y < 0) by ~15 % a pass for some 30 passes. Shrinking stops once a
+    // pass keeps more than half the volume; the box it stops at still holds
+    // all that the full shrink keeps.
+    const Tape tape(3.0 * square(y) - 2.0 * square(x) + square(y) * square(x) + pow(x, 4) + 4.0 * square(x) * y +
+                    2.0 * square(x) * square(z) + square(y) * square(z) + 4.0 * y * square(z) - 4.0 * y + pow(z, 4) -
+                    2.0 * square(z) + 1.0);
+    ShrinkLimits every_pass;
+    every_pass.max_kept_volume = 1.0;
+    const Box3 full = shrink_to_surface(tape, cube(1e4), every_pass);
+    const Box3 stopped = shrink_to_surface(tape, cube(1e4));
+    EXPECT_TRUE(within(full, stopped, 0.0));
+    EXPECT_LT(stopped.lo.y, 2.0 * full.lo.y) << "stopped early, with the tail still long";
+    EXPECT_GT(stopped.lo.y, -1e3) << "but after the passes that shrink fast";
+}
+
 TEST(SearchRegion, ClipsToTheShrunkBoxAndASphericalBounds) {
     const Tape tape(ball({0, 0, 0}, 1.0));
     const SearchRegion box_region(tape, Bounds::make_box(cube(1e9)));

@@ -91,6 +91,17 @@ private:
     int max_cells_;
 };
 
+/// The volume of `inner` over that of `outer` (which holds it), without
+/// forming either volume (they may overflow); a flat side counts as 1.
+double volume_ratio(const Box3& inner, const Box3& outer) {
+    double ratio = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double width = outer.hi[axis] - outer.lo[axis];
+        if (width > 0.0) ratio *= (inner.hi[axis] - inner.lo[axis]) / width;
+    }
+    return ratio;
+}
+
 /// Moves one face (side 0: lo, 1: hi) of `axis` inward past the thickest
 /// slab proven outside; true when it moved by more than `precision` of the
 /// width.
@@ -133,10 +144,11 @@ Box3 shrink_to_surface(const Tape& tape, const Box3& box, const ShrinkLimits& li
     if (prover.outside(box, centre(box))) return box;  // no surface here: nothing to shrink to
     Box3 shrunk = box;
     for (int pass = 0; pass < limits.max_passes; ++pass) {
+        const Box3 before = shrunk;
         bool moved = false;
         for (int axis = 0; axis < 3; ++axis)
             for (int side = 0; side < 2; ++side) moved |= move_face(prover, shrunk, axis, side, limits.precision);
-        if (!moved) break;
+        if (!moved || volume_ratio(shrunk, before) > limits.max_kept_volume) break;
     }
     return shrunk;
 }
