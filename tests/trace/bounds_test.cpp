@@ -140,5 +140,46 @@ TEST(Bounds, SphereClipAgreesWithPointSamples) {
     EXPECT_GT(hits, 100);
 }
 
+// A sphere gate's focus is found without the clip's square root: it must
+// say the same as the clip-based definition — the ray meets the sphere
+// from min(t_min, 0) on, and then its nearest approach to the centre,
+// clamped to that part — on rays from inside, outside, grazing and
+// pointing away, and at extreme scales, where it takes the clip itself.
+TEST(Bounds, SphereGateFocusIsTheClampedNearestApproach) {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> u(-3.0, 3.0);
+    const auto reference = [](const Bounds& gate, const Ray& ray, double t_min) -> std::optional<double> {
+        const auto in_gate = gate.clip(ray, std::min(t_min, 0.0), INFINITY);
+        if (!in_gate) return std::nullopt;
+        const double nearest = -dot(ray.origin - gate.center, ray.dir) / dot(ray.dir, ray.dir);
+        return std::clamp(nearest, in_gate->t0, in_gate->t1);
+    };
+    int met = 0, missed = 0;
+    for (int i = 0; i < 5000; ++i) {
+        const Vec3d c{u(random), u(random), u(random)}, o{u(random), u(random), u(random)}, d{u(random), u(random), u(random)};
+        const Bounds gate = Bounds::make_sphere(c, std::abs(u(random)) + 0.1);
+        const double t_min = i % 3 == 0 ? u(random) : 0.0;
+        const auto fast = gate_focus(gate, {o, d}, t_min), slow = reference(gate, {o, d}, t_min);
+        ASSERT_EQ(fast.has_value(), slow.has_value()) << i;
+        if (!fast) {
+            ++missed;
+            continue;
+        }
+        ++met;
+        EXPECT_NEAR(*fast, *slow, 1e-12 * (1.0 + std::abs(*slow))) << i;
+    }
+    EXPECT_GT(met, 500);
+    EXPECT_GT(missed, 1000);
+    // A ray grazing the unit sphere at t = 2, and one whose exit lies behind it.
+    const Bounds unit = Bounds::make_sphere({0, 0, 0}, 1.0);
+    EXPECT_EQ(gate_focus(unit, {{-2, 1, 0}, {1, 0, 0}}, 0.0), 2.0);
+    EXPECT_FALSE(gate_focus(unit, {{2, 0, 0}, {1, 0, 0}}, 0.0).has_value());
+    EXPECT_EQ(gate_focus(unit, {{0.5, 0, 0}, {1, 0, 0}}, 0.0), 0.0);  // inside, past the middle: the start
+    // Past ordinary sizes the clip's scaled arithmetic answers.
+    const auto huge = gate_focus(Bounds::make_sphere({0, 0, 0}, 1e300), {{0, 1, -4e300}, {0, 0, 1}}, 0.0);
+    ASSERT_TRUE(huge.has_value());
+    EXPECT_NEAR(*huge / 4e300, 1.0, 1e-15);
+}
+
 }  // namespace
 }  // namespace zeroset
