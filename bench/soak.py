@@ -193,7 +193,7 @@ def finite_pfm(path):
     return all(math.isfinite(p) for p in pixels)
 
 
-def run_one(binary, index, text, seconds, megabytes, findings, keep):
+def run_one(binary, index, text, seconds, megabytes, findings, keep, slow):
     with tempfile.TemporaryDirectory(prefix="soak-") as folder:
         scene = Path(folder) / "scene.zs"
         image = Path(folder) / "out.pfm"
@@ -222,8 +222,9 @@ def run_one(binary, index, text, seconds, megabytes, findings, keep):
             verdict = f"exit {code}"
         if leftovers:
             verdict = "leftover files"
-        if verdict not in ("rendered", "error") or (keep and re.search(keep, stderr)):
-            kept = findings / f"{index:05d}-{verdict.split()[0]}.zs"
+        slow_one = slow is not None and elapsed > slow and verdict in ("rendered", "error")
+        if verdict not in ("rendered", "error") or (keep and re.search(keep, stderr)) or slow_one:
+            kept = findings / f"{index:05d}-{'slow' if slow_one else verdict.split()[0]}.zs"
             shutil.copy(scene, kept)
             (kept.with_suffix(".stderr")).write_text(stderr)
         first_line = stderr.strip().splitlines()[0] if stderr.strip() else ""
@@ -242,6 +243,7 @@ def main():
     parser.add_argument("--binary", default=str(ROOT / "build" / "zeroset"))
     parser.add_argument("--findings", default=str(ROOT / "build" / "soak-findings"))
     parser.add_argument("--keep", help="also keep the scenes whose messages match this regular expression")
+    parser.add_argument("--slow", type=float, help="also keep the scenes that take longer than this many seconds")
     args = parser.parse_args()
 
     findings = Path(args.findings)
@@ -256,7 +258,7 @@ def main():
     started = time.monotonic()
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         futures = [pool.submit(run_one, args.binary, i, text, args.seconds, args.memory_mb, findings,
-                               args.keep)
+                               args.keep, args.slow)
                    for i, text in enumerate(scenes)]
         for future in concurrent.futures.as_completed(futures):
             verdict, elapsed, message = future.result()
