@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <string>
+#include <vector>
 
 #include "pov/pov_test_support.hpp"
 
@@ -32,6 +35,50 @@ TEST(PovObjects, PolynomialsFollowPovRaysTermOrder) {
     EXPECT_DOUBLE_EQ(value_at(polynomial, x, y, z), x * x + y * y + z * z - 1);
     // Commas may be left out between coefficients (hyptorus.pov does).
     EXPECT_DOUBLE_EQ(value_at(first_node(import(lit + "poly { 2, <1, 0, 0, 0 1, 0, 0, 1, 0, -1> }")), x, y, z), x * x + y * y + z * z - 1);
+}
+
+// Polynomials are written in a sparse Horner form (pov_solids.cpp): the
+// same polynomial, with fewer products than the sum of its terms — which
+// makes its ray polynomial cheaper to form.
+TEST(PovObjects, PolynomialsAreTheirTermsWithFewerProducts) {
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> coefficient(-3.0, 3.0), point(-1.5, 1.5);
+    for (int order = 2; order <= 6; ++order) {
+        const std::size_t count = static_cast<std::size_t>((order + 1) * (order + 2) * (order + 3) / 6);
+        for (int trial = 0; trial < 5; ++trial) {
+            std::vector<double> c(count);
+            std::string text = lit + "poly { " + std::to_string(order) + ", <";
+            for (std::size_t k = 0; k < count; ++k) {
+                c[k] = random() % 3 == 0 ? std::round(coefficient(random) * 8.0) / 8.0 : 0.0;  // sparse, as POV-Ray's are
+                text += (k ? ", " : "") + std::to_string(c[k]);
+            }
+            const SceneNode& n = first_node(import(text + "> }"));
+            for (int p = 0; p < 10; ++p) {
+                const double x = point(random), y = point(random), z = point(random);
+                // Term by term in POV-Ray's order, and a bound on either sum's rounding.
+                double sum = 0.0, magnitude = 0.0;
+                std::size_t k = 0;
+                for (int i = order; i >= 0; --i)
+                    for (int j = order - i; j >= 0; --j)
+                        for (int l = order - i - j; l >= 0; --l, ++k) {
+                            const double term = c[k] * std::pow(x, i) * std::pow(y, j) * std::pow(z, l);
+                            sum += term;
+                            magnitude += std::abs(term);
+                        }
+                EXPECT_NEAR(value_at(n, x, y, z), sum, 1e-13 * magnitude) << "order " << order << ", trial " << trial;
+            }
+        }
+    }
+    // torus.pov's quartic: ten terms, six products of two squares when summed
+    // term by term; three in the Horner form.
+    const SceneNode& torus = first_node(import(lit + "quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -104, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,"
+                                                     " 1, 0, 0, 2, 0, 56, 0, 0, 0, 0, 1, 0, -104, 0, 784> }"));
+    const Tape tape(torus.object.surface);
+    const auto products = std::count_if(tape.clauses().begin(), tape.clauses().end(), [](const Clause& c) {
+        return c.op == Op::Mul || c.op == Op::Powi;
+    });
+    EXPECT_LE(products, 7) << torus.object.surface.to_string();
+    EXPECT_NEAR(value_at(torus, std::sqrt(40.0) + std::sqrt(12.0), 0, 0), 0.0, 1e-9);
 }
 
 TEST(PovObjects, SolidsAndTheirTransforms) {

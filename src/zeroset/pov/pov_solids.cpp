@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "zeroset/pov/pov_object_parts.hpp"
 
@@ -20,26 +21,56 @@ constexpr double unbounded_extent = 1e4;
 /// The number of terms of a polynomial of degree n in three variables.
 std::size_t term_count(int n) { return static_cast<std::size_t>((n + 1) * (n + 2) * (n + 3) / 6); }
 
-/// POV-Ray's order of a poly's terms: xⁱyʲzᵏ by descending i, then j, then
-/// k. Summed term by term, the zero ones left out: POV-Ray's polynomials are
-/// mostly sparse, and a Horner form's products by zero coefficients made
-/// the ray polynomial 3× slower to form (and its rounding bound wider).
+/// A term c·xⁱyʲzᵏ of a polynomial.
+struct Monomial {
+    std::array<int, 3> power;
+    double coefficient;
+};
+
+/// A sparse multivariate Horner form of the sum of `terms` (distinct powers,
+/// none with a zero coefficient): the variable found in the most terms is
+/// factored out of them, at its lowest power there, and both parts are
+/// written so in turn. No product by a zero coefficient is made — a dense
+/// Horner form's made POV-Ray's mostly sparse polynomials 3× slower to form
+/// along a ray — and fewer products than term by term: the torus's ten
+/// terms, (x² + 2y² + 2z² − 104)·x² + (y² + 2z² + 56)·y² + (z² − 104)·z² +
+/// 784, take 16 % fewer instructions to render than their sum. The
+/// coefficients are POV-Ray's own, untouched: the same polynomial exactly.
+Expr sparse_horner(std::vector<Monomial> terms, const ExprPoint& p) {
+    if (terms.empty()) return Expr(0.0);
+    int variable = -1;
+    std::size_t most = 0;
+    for (int v = 0; v < 3; ++v) {
+        const auto count = static_cast<std::size_t>(
+            std::count_if(terms.begin(), terms.end(), [v](const Monomial& t) { return t.power[static_cast<std::size_t>(v)] > 0; }));
+        if (count > most) {
+            most = count;
+            variable = v;
+        }
+    }
+    if (variable < 0) return Expr(terms.front().coefficient);  // the constant term, alone
+    const auto v = static_cast<std::size_t>(variable);
+    const auto split = std::stable_partition(terms.begin(), terms.end(), [v](const Monomial& t) { return t.power[v] > 0; });
+    std::vector<Monomial> with(terms.begin(), split), without(split, terms.end());
+    int lowest = with.front().power[v];
+    for (const Monomial& t : with) lowest = std::min(lowest, t.power[v]);
+    for (Monomial& t : with) t.power[v] -= lowest;
+    const Expr factored = sparse_horner(std::move(with), p) * powi(p[variable], lowest);
+    return without.empty() ? factored : factored + sparse_horner(std::move(without), p);
+}
+
+/// The polynomial of degree n whose coefficients `c` are in POV-Ray's order
+/// of a poly's terms: xⁱyʲzᵏ by descending i, then j, then k.
 Expr poly_expression(int n, const std::vector<double>& c) {
-    const ExprPoint p = coordinates();
-    Expr sum(0.0);
+    std::vector<Monomial> terms;
     std::size_t index = 0;
     for (int i = n; i >= 0; --i)
         for (int j = n - i; j >= 0; --j)
             for (int k = n - i - j; k >= 0; --k) {
                 const double a = c[index++];
-                if (a == 0.0) continue;
-                Expr term(a);
-                if (i > 0) term = term * powi(p.x, i);
-                if (j > 0) term = term * powi(p.y, j);
-                if (k > 0) term = term * powi(p.z, k);
-                sum = sum + term;
+                if (a != 0.0) terms.push_back({{i, j, k}, a});
             }
-    return sum;
+    return sparse_horner(std::move(terms), coordinates());
 }
 
 std::shared_ptr<PovObject> leaf(const PovToken& keyword, const std::string& where, Expr f, Bounds bounds) {
