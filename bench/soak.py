@@ -243,7 +243,8 @@ def main():
     parser.add_argument("--binary", default=str(ROOT / "build" / "zeroset"))
     parser.add_argument("--findings", default=str(ROOT / "build" / "soak-findings"))
     parser.add_argument("--keep", help="also keep the scenes whose messages match this regular expression")
-    parser.add_argument("--slow", type=float, help="also keep the scenes that take longer than this many seconds")
+    parser.add_argument("--slow", type=float,
+                        help="also keep the scenes whose render or error takes longer than this many seconds")
     args = parser.parse_args()
 
     findings = Path(args.findings)
@@ -275,6 +276,9 @@ def main():
     print("  most frequent errors:")
     for message, count in messages.most_common(12):
         print(f"    {count:5d}  {message}")
+    if args.slow is not None:
+        slow = sum(1 for t in times if t > args.slow)
+        print(f"  {slow} runs slower than {args.slow:g} s, kept in {findings}")
     bad = sum(c for v, c in verdicts.items() if v not in ("rendered", "error"))
     if bad:
         print(f"soak: {bad} findings, kept in {findings}")

@@ -179,6 +179,26 @@ TEST(Bounds, SphereGateFocusIsTheClampedNearestApproach) {
     const auto huge = gate_focus(Bounds::make_sphere({0, 0, 0}, 1e300), {{0, 1, -4e300}, {0, 0, 1}}, 0.0);
     ASSERT_TRUE(huge.has_value());
     EXPECT_NEAR(*huge / 4e300, 1.0, 1e-15);
+    // Lengths of 10¹⁰⁰ each are still ordinary one by one, but b² and a·c,
+    // products of four, would overflow to a NaN discriminant: a ray pointing
+    // away was taken for one that meets the gate.
+    const Bounds big = Bounds::make_sphere({0, 0, 0}, 1e100);
+    EXPECT_FALSE(gate_focus(big, {{0, 0, -4e100}, {0, 0, -1e100}}, 0.0).has_value());
+    const auto towards = gate_focus(big, {{0, 0, -4e100}, {0, 0, 1e100}}, 0.0);
+    ASSERT_TRUE(towards.has_value());
+    EXPECT_NEAR(*towards, 4.0, 1e-12);
+}
+
+// The clip without scaling must keep b² and a·c in range: with a radius,
+// an offset and a direction of 10¹⁰⁰ (and of 10⁻¹⁰⁰) they overflowed
+// (underflowed) once lengths up to 2^±400 went unscaled.
+TEST(Bounds, SphereClipOfLargeAndSmallRaysMeetsTheSphere) {
+    for (const double size : {1e100, 1e-100, 1e70, 1e-70}) {
+        const auto span = Bounds::make_sphere({0, 0, 0}, size).clip({{0, 0, -4 * size}, {0, 0, size}}, 0.0, INFINITY);
+        ASSERT_TRUE(span.has_value()) << size;
+        EXPECT_NEAR(span->t0, 3.0, 1e-12) << size;
+        EXPECT_NEAR(span->t1, 5.0, 1e-12) << size;
+    }
 }
 
 }  // namespace

@@ -48,7 +48,11 @@ Expr sparse_horner(std::vector<Monomial> terms, const ExprPoint& p) {
             variable = v;
         }
     }
-    if (variable < 0) return Expr(terms.front().coefficient);  // the constant term, alone
+    if (variable < 0) {  // the constant term (one at most: the powers are distinct)
+        double constant = 0.0;
+        for (const Monomial& t : terms) constant += t.coefficient;
+        return Expr(constant);
+    }
     const auto v = static_cast<std::size_t>(variable);
     const auto split = std::stable_partition(terms.begin(), terms.end(), [v](const Monomial& t) { return t.power[v] > 0; });
     std::vector<Monomial> with(terms.begin(), split), without(split, terms.end());

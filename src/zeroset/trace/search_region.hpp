@@ -2,10 +2,12 @@
 // (survey §6.1), shrunk by interval analysis to the box the surface can be
 // in. Each face of the bounds' box moves inward while the slab it sweeps is
 // proven to hold only f > 0: outside the solid, where no ray can hit or start
-// inside. So loose bounds cost nothing and change nothing: the span a ray is
+// inside. So loose bounds cost little and change little: the span a ray is
 // searched over, and the tolerances scaled to the object's size
-// (settings_for_scale), come from the surface, not from how generously its
-// bounds were drawn. Where the bounds cut the solid (f ≤ 0 on a face), that
+// (settings_for_scale), come from the box interval analysis can prove about
+// the surface, not from how generously its bounds were drawn — though where
+// the proofs converge slowly (ShrinkLimits) that box stays larger than the
+// surface's own. Where the bounds cut the solid (f ≤ 0 on a face), that
 // face stays where it is.
 #pragma once
 
