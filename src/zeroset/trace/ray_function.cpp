@@ -19,9 +19,13 @@ void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;
     focus_ = std::numeric_limits<double>::quiet_NaN();
     last_value_t_ = std::numeric_limits<double>::quiet_NaN();
-    const double length = std::hypot(ray.dir.x, ray.dir.y, ray.dir.z);  // no underflow for tiny directions
-    dir_length_ = length > 0.0 ? rounding::up(length) : 0.0;
+    dir_length_known_ = false;
     reset_base_tape();
+}
+
+double RayFunction::measured_dir_length() const {
+    const double length = std::hypot(ray_.dir.x, ray_.dir.y, ray_.dir.z);  // no underflow for tiny directions
+    return length > 0.0 ? rounding::up(length) : 0.0;
 }
 
 void RayFunction::set_base_tape(const Tape& tape, bool can_prune) {
