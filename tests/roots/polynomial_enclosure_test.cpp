@@ -177,6 +177,36 @@ TEST(PolynomialEnclosure, NoPolynomialWithinTheRadiusVanishesBeyondTheRootRadius
     EXPECT_GT(cut, 1500);  // the bound cuts nearly every such span
 }
 
+// The radius is the least of the grid largest·2^−j that bounds: within a
+// factor 2 of Fujiwara's 2·max_k (w_(n−k)/lead)^(1/k), w being a
+// coefficient's weight with its radius, and the same whatever power-of-two
+// multiple of itself `largest` is (a faster search for it must end where
+// the halvings do).
+TEST(PolynomialEnclosure, TheRootRadiusIsWithinTwiceFujiwarasAndOnItsGrid) {
+    std::mt19937 random(13);
+    std::uniform_int_distribution<int> shift(0, 6);
+    int checked = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const RandomEnclosure e = random_enclosure(random, 1 + trial % 6);
+        const std::size_t n = e.value.size() - 1;
+        const double lead = std::abs(e.value[n]) - e.radius[n];
+        double fujiwara = 0.0;
+        for (std::size_t k = 1; k <= n; ++k)
+            fujiwara = std::max(fujiwara, 2.0 * std::pow((std::abs(e.value[n - k]) + e.radius[n - k]) / lead, 1.0 / static_cast<double>(k)));
+        const double largest = 1e6;
+        const double rho = root_radius({e.value, e.radius}, largest, largest);
+        if (!std::isfinite(rho)) continue;
+        ++checked;
+        EXPECT_GE(rho, fujiwara * (1.0 - 1e-12)) << "trial " << trial;
+        EXPECT_LE(rho, 2.0 * fujiwara * (1.0 + 1e-12)) << "trial " << trial;
+        const double finer = largest / std::ldexp(1.0, shift(random));
+        if (finer >= rho) {
+            EXPECT_EQ(root_radius({e.value, e.radius}, largest, finer), rho) << "trial " << trial;
+        }
+    }
+    EXPECT_GT(checked, 1500);
+}
+
 // The same with a top coefficient that may be 0 (a ray along which the top
 // form nearly vanishes): the next one leads, and only up to the reach given.
 TEST(PolynomialEnclosure, NoPolynomialVanishesBeyondTheRootRadiusWhenTheTopCoefficientMayBeZero) {
