@@ -14,6 +14,17 @@
 
 namespace zeroset {
 
+/// Whether a sphere against a ray needs no scaling: its lengths — the larger
+/// of radius and offset, `k`, and the direction's largest component, `m` —
+/// between 2^−250 and 2^250. Then b² and a·c of its quadratic, products of
+/// four lengths, stay within 2^±1000, normal doubles, and scaling by powers
+/// of two would change no bit of the result (it would only move where a
+/// component 2^−600 of the largest turns subnormal).
+constexpr bool sphere_lengths_are_ordinary(double k, double m) {
+    constexpr double tiny = 0x1p-250, huge = 0x1p250;
+    return k > tiny && k < huge && m > tiny && m < huge;
+}
+
 struct Bounds {
     enum class Kind { Box, Sphere, None };
     Kind kind = Kind::Box;
@@ -78,12 +89,7 @@ struct Bounds {
         const Vec3d offset = ray.origin - center;
         const double k = std::max(radius, max_abs(offset)), m = max_abs(ray.dir);
         if (!(m > 0.0) || !(k > 0.0) || !std::isfinite(k) || !std::isfinite(m)) return std::nullopt;
-        // Lengths between 2^−250 and 2^250 need no scaling: b² and a·c,
-        // products of four lengths, stay within 2^±1000, normal doubles, and
-        // scaling by powers of two changes no bit of the result (it would
-        // only move where a component 2^−600 of the largest turns subnormal).
-        constexpr double tiny = 0x1p-250, huge = 0x1p250;
-        const bool ordinary = k > tiny && k < huge && m > tiny && m < huge;
+        const bool ordinary = sphere_lengths_are_ordinary(k, m);
         const int ek = ordinary ? 0 : binary_exponent(k), em = ordinary ? 0 : binary_exponent(m);
         const auto scaled = [ordinary](const Vec3d& v, int e) {
             return ordinary ? v : Vec3d{times_power_of_two(v.x, -e), times_power_of_two(v.y, -e), times_power_of_two(v.z, -e)};
@@ -129,12 +135,9 @@ inline std::optional<double> gate_focus(const Bounds& gate, const Ray& ray, doub
         // root, and the nearest approach, −b/a, is the chord's middle, so it
         // lies in the chord: of the clamp only `from` is left. Every ray asks
         // this, and the clip's root and divisions were a tenth of a gated
-        // sheet's render. Lengths of ordinary size only, as in Bounds::clip
-        // (there b² and a·c neither overflow nor underflow).
+        // sheet's render. Lengths of ordinary size only, as in Bounds::clip.
         const Vec3d oc = ray.origin - gate.center;
-        const double k = std::max(gate.radius, max_abs(oc)), m = max_abs(ray.dir);
-        constexpr double tiny = 0x1p-250, huge = 0x1p250;
-        if (k > tiny && k < huge && m > tiny && m < huge) {
+        if (sphere_lengths_are_ordinary(std::max(gate.radius, max_abs(oc)), max_abs(ray.dir))) {
             const double a = dot(ray.dir, ray.dir), b = dot(oc, ray.dir), c = dot(oc, oc) - gate.radius * gate.radius;
             const double disc = b * b - a * c;
             if (!(disc >= 0.0)) return std::nullopt;  // the line passes the sphere by
