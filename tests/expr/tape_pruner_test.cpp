@@ -157,19 +157,16 @@ TEST(TapePruner, ProsperoShrinksByOrdersOfMagnitudeInSmallBoxes) {
     EXPECT_LT(most_slots, full.slot_count() / 10);
 }
 
-/// Two tapes are the same: clauses, value ids, constants, slots.
+/// Two tapes are the same: clauses, constants, slots.
 void expect_same_tape(const Tape& a, const Tape& b) {
     ASSERT_EQ(a.clauses().size(), b.clauses().size());
     for (std::size_t i = 0; i < a.clauses().size(); ++i) {
         const Clause &p = a.clauses()[i], &q = b.clauses()[i];
         ASSERT_TRUE(p.op == q.op && p.out == q.out && p.a == q.a && p.b == q.b) << "clause " << i;
-        ASSERT_EQ(a.operand_values()[i].a, b.operand_values()[i].a);
-        ASSERT_EQ(a.operand_values()[i].b, b.operand_values()[i].b);
     }
     EXPECT_EQ(a.constants(), b.constants());
     EXPECT_EQ(a.slot_count(), b.slot_count());
     EXPECT_EQ(a.result_slot(), b.result_slot());
-    EXPECT_EQ(a.result_value(), b.result_value());
 }
 
 /// The four-lane evaluate() against four one-box ones over random boxes:
@@ -218,30 +215,31 @@ TEST(TapePruner, FourLanesMatchSingleBoxesOnTheModels) {
     }
 }
 
-TEST(TapePruner, ATapeWithoutValueIdsEvaluatesAlikeAndRefusesToBePrunedAgain) {
-    const Tape full(min(ball(-5, 1), ball(5, 1)) + 0.5 * var_z());
+TEST(TapePruner, APrunedTapePrunesAgainAsTheFullTapeDoes) {
+    // Its values are followed through its own slots, which reuse the
+    // full tape's differently: pruning it again over a smaller box gives
+    // the tape that pruning the full tape there gives.
+    const Expr x = var_x(), y = var_y(), z = var_z();
+    const Tape full(min(min(ball(-5, 1), ball(5, 1)), max(hypot(x, y) - 2.0, z - 3.0)) + 0.5 * z);
     TapePruner pruner(full);
-    const Box3 near_left{{-6, -1, -1}, {-4, 1, 1}};
-    (void)pruner.evaluate(full, near_left);
-    Tape with_ids, without_ids;
-    const Tape& kept = pruner.simplified(with_ids, 0, TapePruner::ValueIds::Keep);
-    const Tape& dropped = pruner.simplified(without_ids, 0, TapePruner::ValueIds::Drop);
-    ASSERT_EQ(&kept, &with_ids);
-    ASSERT_EQ(&dropped, &without_ids);
-    EXPECT_TRUE(with_ids.prunable());
-    EXPECT_FALSE(without_ids.prunable());
-    EXPECT_TRUE(without_ids.operand_values().empty());
-    EXPECT_EQ(without_ids.result_value(), with_ids.result_value());
-    expect_same_inside(full, without_ids, near_left);
-    EXPECT_THROW((void)pruner.evaluate(without_ids, near_left), std::logic_error);
-    // Pruned to nothing but a constant, it stays prunable and says which.
+    const Box3 near_left{{-7, -1.5, -1.5}, {-3, 1.5, 1.5}}, nearer{{-6, -1, -1}, {-4, 1, 1}};
+    Tape wide, narrow, direct;
+    (void)pruner.prune(full, near_left, wide);
+    (void)pruner.prune(wide, nearer, narrow);
+    (void)pruner.prune(full, nearer, direct);
+    expect_same_tape(narrow, direct);
+    expect_same_inside(full, narrow, nearer);
+    // Pruned to nothing but a constant, it prunes again to that constant.
     const Tape constant_min(min(var_x(), Expr(5.0)));
     TapePruner constant_pruner(constant_min);
-    (void)constant_pruner.evaluate(constant_min, Box3{{6, 0, 0}, {7, 1, 1}});
-    Tape just_five;
-    (void)constant_pruner.simplified(just_five, 0, TapePruner::ValueIds::Drop);
+    Tape just_five, again;
+    (void)constant_pruner.prune(constant_min, Box3{{6, 0, 0}, {7, 1, 1}}, just_five);
     EXPECT_TRUE(just_five.clauses().empty());
-    EXPECT_EQ(just_five.result_value(), just_five.result_slot());
+    const Interval five = constant_pruner.prune(just_five, Box3{{6.5, 0, 0}, {7, 1, 1}}, again);
+    EXPECT_EQ(five.lo, 5.0);
+    EXPECT_EQ(five.hi, 5.0);
+    EXPECT_TRUE(again.clauses().empty());
+    EXPECT_EQ(again.result_slot(), just_five.result_slot());
 }
 
 }  // namespace

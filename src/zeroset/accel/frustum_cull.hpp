@@ -28,7 +28,7 @@ namespace zeroset {
 
 class FrustumCuller {
 public:
-    /// For the solid {f ≤ 0} of `tape` (which must be prunable).
+    /// For the solid {f ≤ 0} of `tape`.
     explicit FrustumCuller(const Tape& tape);
 
     /// Culls the frustum's tile against the solid {f ≤ 0} ∩ box, all in

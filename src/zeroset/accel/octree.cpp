@@ -65,14 +65,12 @@ bool same_tape(const Tape& p, const Tape& q) {
     const auto same_clause = [](const Clause& c, const Clause& d) {
         return c.op == d.op && c.out == d.out && c.a == d.a && c.b == d.b;
     };
-    const auto same_operands = [](const ClauseOperands& c, const ClauseOperands& d) { return c.a == d.a && c.b == d.b; };
     const auto same_constant = [](const std::pair<std::uint32_t, double>& c, const std::pair<std::uint32_t, double>& d) {
         return c.first == d.first && std::bit_cast<std::uint64_t>(c.second) == std::bit_cast<std::uint64_t>(d.second);
     };
-    return p.result_slot() == q.result_slot() && p.result_value() == q.result_value() && p.slot_count() == q.slot_count() &&
+    return p.result_slot() == q.result_slot() && p.slot_count() == q.slot_count() &&
            std::ranges::equal(p.clauses(), q.clauses(), same_clause) &&
-           std::ranges::equal(p.constants(), q.constants(), same_constant) &&
-           std::ranges::equal(p.operand_values(), q.operand_values(), same_operands);
+           std::ranges::equal(p.constants(), q.constants(), same_constant);
 }
 
 /// 10⁻⁵ of the diagonal, and at least 64 ulps of the largest coordinate.
@@ -464,7 +462,7 @@ void Octree::finish_stats(const OctreeSettings& s, double build_seconds) {
         stats_.p90_lipschitz = finite[finite.size() * 9 / 10];
     }
     stats_.bytes = nodes_.size() * sizeof(Node) + cells_.size() * (sizeof(OctreeCell) + sizeof(Box3)) +
-                   stats_.stored_clauses * (sizeof(Clause) + sizeof(ClauseOperands));
+                   stats_.stored_clauses * sizeof(Clause);
     for (const Tape& t : tapes_) stats_.bytes += t.constants().size() * sizeof(std::pair<std::uint32_t, double>);
     stats_.depth = s.max_depth;
     stats_.build_seconds = build_seconds;

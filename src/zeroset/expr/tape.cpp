@@ -56,7 +56,6 @@ Tape::Tape(const Expr& root) {
         for (int k = 0; k < op_arity(order[i].op()); ++k) last_use[index[order[i].operand(k).id()]] = i;
 
     std::vector<std::uint32_t> slot(order.size(), 0);
-    std::vector<ValueId> value(order.size(), 0);
     std::vector<std::uint32_t> free_slots;
     slot_count_ = 3;
     for (std::size_t i = 0; i < order.size(); ++i) {
@@ -71,7 +70,6 @@ Tape::Tape(const Expr& root) {
                 break;
             default: break;
         }
-        value[i] = slot[i];
     }
     for (std::size_t i = 0; i < order.size(); ++i) {
         const Expr& e = order[i];
@@ -95,13 +93,9 @@ Tape::Tape(const Expr& root) {
             if (!is_leaf(order[operand].op()) && last_use[operand] == i && !already_freed)
                 free_slots.push_back(slot[operand]);
         }
-        const ValueId value_a = value[index[e.operand(0).id()]];
-        operand_values_.push_back({value_a, arity == 2 ? value[index[e.operand(1).id()]] : value_a});
-        value[i] = clause_value | static_cast<ValueId>(clauses_.size());
         clauses_.push_back({e.op(), slot[i], a, b});
     }
     result_slot_ = slot[order.size() - 1];
-    result_value_ = value[order.size() - 1];
 }
 
 bool Tape::has_choices() const {

@@ -24,17 +24,6 @@ struct Clause {
     std::uint32_t b;  // second operand slot; for Powi the exponent (as int)
 };
 
-/// Which value a clause's operand is, whatever slot holds it: x, y, z or a
-/// constant by its slot, or the result of an earlier clause by the clause's
-/// index with `clause_value` set. Slots are reused; these ids are not, which
-/// is what tape pruning needs to follow values.
-using ValueId = std::uint32_t;
-inline constexpr ValueId clause_value = ValueId{1} << 31;
-
-struct ClauseOperands {
-    ValueId a;
-    ValueId b;  // = a for unary ops (and Powi)
-};
 
 class Tape {
 public:
@@ -48,11 +37,6 @@ public:
     [[nodiscard]] const std::vector<std::pair<std::uint32_t, double>>& constants() const { return constants_; }
     [[nodiscard]] std::uint32_t slot_count() const { return slot_count_; }
     [[nodiscard]] std::uint32_t result_slot() const { return result_slot_; }
-    /// Per clause, the values its operands are (none in a tape pruned
-    /// without them, which cannot be pruned again).
-    [[nodiscard]] const std::vector<ClauseOperands>& operand_values() const { return operand_values_; }
-    [[nodiscard]] bool prunable() const { return operand_values_.size() == clauses_.size(); }  // true without clauses: nothing to follow
-    [[nodiscard]] ValueId result_value() const { return result_value_; }
     /// True when every op is +, −, ×, neg, square or powi with n ≥ 0.
     [[nodiscard]] bool is_polynomial() const;
     /// True when a min or max occurs: what tape pruning can remove.
@@ -62,11 +46,9 @@ private:
     friend class TapePruner;
 
     std::vector<Clause> clauses_;
-    std::vector<ClauseOperands> operand_values_;
     std::vector<std::pair<std::uint32_t, double>> constants_;
     std::uint32_t slot_count_ = 3;
     std::uint32_t result_slot_ = 0;
-    ValueId result_value_ = 0;
 };
 
 }  // namespace zeroset

@@ -1,24 +1,24 @@
-// Interval evaluation records, for each min and max, the side that wins over
-// the box and so which value it equals (values followed by their ids,
-// Tape::operand_values); simplification is one backward pass over the
-// source tape, and one over the clauses it keeps for their value ids.
+// Interval evaluation records which value each clause's operands are (by
+// following which value each slot holds) and, for each min and max, the
+// side that wins over the box and so which value it equals; simplification
+// is one backward pass over the source tape.
 #include "zeroset/expr/tape_pruner.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <stdexcept>
 
 namespace zeroset {
 
 TapePruner::TapePruner(const Tape& full)
-    : slots_(full.slot_count()),
+    : operands_(full.clauses().size()),
+      slot_value_(full.slot_count()),
+      slots_(full.slot_count()),
       equals_(full.clauses().size()),
       constant_value_(full.slot_count()),
       clause_live_(full.clauses().size(), 0),
       constant_live_(full.slot_count(), 0),
       working_slot_(full.clauses().size()),
-      emitted_at_(full.clauses().size()),
       constant_slot_(full.slot_count()) {}
 
 // Which side of a min or max wins over the box, if one does (neither
@@ -63,23 +63,31 @@ TapePruner::TapePruner(const Tape& full)
 // this loop, which is most of the cost of slicing a large model.
 template <class T>
 [[gnu::flatten]] T TapePruner::walk(const Tape& source, T* s) {
-    if (!source.prunable()) throw std::logic_error("a tape made without value ids cannot be pruned again");
     source_ = &source;
     choices_made_.fill(0);
+    ValueId* held = slot_value_.data();  // the value in each slot
+    for (ValueId v = 0; v < 3; ++v) held[v] = v;
     for (const auto& [slot, value] : source.constants()) {
         s[slot] = T(value);
         constant_value_[slot] = value;
+        held[slot] = slot;
     }
     const std::vector<Clause>& clauses = source.clauses();
     for (std::size_t i = 0; i < clauses.size(); ++i) {
         const Clause& c = clauses[i];
+        const bool binary = op_arity(c.op) == 2;
         const T& a = s[c.a];
-        const T& b = s[op_arity(c.op) == 2 ? c.b : c.a];
+        const T& b = s[binary ? c.b : c.a];
+        ClauseOperands& v = operands_[i];
+        v.a = held[c.a];
+        v.b = binary ? held[c.b] : v.a;
+        held[c.out] = clause_value | static_cast<ValueId>(i);
         std::array<ValueId, lanes>& equals = equals_[i];
         equals.fill(clause_value | static_cast<ValueId>(i));
-        if (c.op == Op::Min || c.op == Op::Max) record_winners(c.op, a, b, source.operand_values()[i], equals);
+        if (c.op == Op::Min || c.op == Op::Max) record_winners(c.op, a, b, v, equals);
         s[c.out] = apply_op<T>(c.op, a, b, static_cast<int>(c.b));
     }
+    result_value_ = held[source.result_slot()];
     return s[source.result_slot()];
 }
 
@@ -119,9 +127,8 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
 
 // One backward pass does liveness, slot allocation and emission: walking
 // backwards, the first use of a value met is its last use, where it takes a
-// slot; its definition frees the slot. Slots are final when taken; only the
-// clauses' value ids wait for the count of kept clauses.
-[[gnu::flatten]] void TapePruner::simplify(Tape& out, int lane, ValueIds ids) {
+// slot; its definition frees the slot. Slots are final when taken.
+[[gnu::flatten]] void TapePruner::simplify(Tape& out, int lane) {
     const Tape& source = *source_;
     if (++epoch_ == 0) {  // stamps wrapped: clear them once every 2^32 prunes
         std::fill(clause_live_.begin(), clause_live_.end(), 0);
@@ -157,18 +164,15 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
         return constant_slot[v];
     };
     const std::vector<Clause>& clauses = source.clauses();
-    const std::vector<ClauseOperands>& operands = source.operand_values();
+    const ClauseOperands* operands = operands_.data();
     const std::size_t n = clauses.size();
     // At most every clause is kept, and each frees one slot.
     if (kept_.size() < n) {
         kept_.resize(n);
-        kept_operands_.resize(n);
         free_slots_.resize(n);
     }
-    const bool with_ids = ids == ValueIds::Keep;
 
-    const ValueId root = resolve(source.result_value(), lane);
-    const std::uint32_t root_slot = take_slot(root);
+    const std::uint32_t root_slot = take_slot(resolve(result_value_, lane));
     std::size_t first = n;  // the kept clauses fill kept_[first, n)
     for (std::size_t i = n; i-- > 0;) {
         // Only resolved values take slots, so a live clause is never a chosen min/max.
@@ -176,32 +180,15 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
         const Clause& c = clauses[i];
         const bool binary = op_arity(c.op) == 2;
         const ClauseOperands& v = operands[i];
-        const ValueId a = resolve(v.a, lane), b = binary ? resolve(v.b, lane) : a;
-        const std::uint32_t slot_a = take_slot(a), slot_b = binary ? take_slot(b) : c.b;
+        const std::uint32_t slot_a = take_slot(resolve(v.a, lane));
+        const std::uint32_t slot_b = binary ? take_slot(resolve(v.b, lane)) : c.b;
         // Freed after the operands took theirs, so the output never aliases an
         // operand (the batch evaluator relies on that).
         free_slots_[free_count++] = working_slot[i];
         kept_[--first] = {c.op, working_slot[i], slot_a, slot_b};
-        if (with_ids) {
-            emitted_at_[i] = static_cast<std::uint32_t>(first);
-            kept_operands_[first] = {a, b};  // the source's ids, renumbered below
-        }
     }
-
     out.clauses_.assign(kept_.begin() + static_cast<std::ptrdiff_t>(first), kept_.begin() + static_cast<std::ptrdiff_t>(n));
-    // A clause's value id is its place in the pruned tape; a constant's is its slot.
-    const auto renumber = [&](ValueId v) -> ValueId {
-        if (v & clause_value) return clause_value | (emitted_at_[v & ~clause_value] - static_cast<std::uint32_t>(first));
-        return v < 3 ? v : constant_slot[v];
-    };
-    out.operand_values_.resize(with_ids ? n - first : 0);
-    if (with_ids)
-        for (std::size_t k = first; k < n; ++k)
-            out.operand_values_[k - first] = {renumber(kept_operands_[k].a), renumber(kept_operands_[k].b)};
     out.result_slot_ = root_slot;
-    // The root is the last kept clause when it is a clause's value.
-    const auto last_kept = static_cast<ValueId>(n - first - 1);
-    out.result_value_ = with_ids ? renumber(root) : (root & clause_value) ? clause_value | last_kept : renumber(root);
     out.slot_count_ = next_slot;
 }
 

@@ -9,8 +9,9 @@
 // compact slot numbering (each live constant a slot of its own, working
 // slots reused once dead), so a short tape is also short in slots and a
 // batch of lanes over it stays in L1. The analysis follows values, not
-// slots, so any tape can be pruned — the full tape or one already pruned,
-// over a smaller box — unless it was made without value ids.
+// slots — which value each slot holds is tracked as the tape is walked —
+// so any tape can be pruned: the full tape or one already pruned, over a
+// smaller box.
 // Evaluators switch to a pruned tape with rebind(), which loads its
 // constants. Pruning reuses its buffers and the output tape's: after
 // warm-up it does not allocate.
@@ -40,7 +41,7 @@ public:
     /// and writes into `out` the clauses live there. Returns f over the box.
     Interval prune(const Tape& source, const Box3& box, Tape& out) {
         const Interval value = evaluate(source, box);
-        simplify(out, 0, ValueIds::Keep);
+        simplify(out, 0);
         return value;
     }
 
@@ -50,21 +51,29 @@ public:
     /// … or over four boxes in one walk, lane k for boxes[k] (the same
     /// bits as four calls of the one-box evaluate()) …
     IntervalLanes evaluate(const Tape& source, std::span<const Box3, lanes> boxes);
-    /// Whether a pruned tape gets the value ids that pruning it again needs
-    /// (Tape::prunable); a tape that will only be evaluated can do without.
-    enum class ValueIds { Keep, Drop };
 
     /// … and the tape to walk in box `lane` of the last evaluate(): `out`,
     /// filled with the pruned tape, or — when no min or max has a side that
     /// wins over the whole box, so pruning would keep everything — that
     /// evaluation's source itself, with `out` left as it was.
-    const Tape& simplified(Tape& out, int lane = 0, ValueIds ids = ValueIds::Keep) {
+    const Tape& simplified(Tape& out, int lane = 0) {
         if (choices_made_[lane] == 0) return *source_;
-        simplify(out, lane, ids);
+        simplify(out, lane);
         return out;
     }
 
 private:
+    /// Which value a clause's operand is, whatever slot holds it: x, y, z or
+    /// a constant by its slot, or the result of a clause of the walked tape
+    /// by the clause's index with `clause_value` set. Slots are reused; these
+    /// ids are not, which is what following values needs.
+    using ValueId = std::uint32_t;
+    static constexpr ValueId clause_value = ValueId{1} << 31;
+    struct ClauseOperands {
+        ValueId a;
+        ValueId b;  // = a for unary ops (and Powi)
+    };
+
     /// The walk of both evaluate()s, over the number type T (Interval or IntervalLanes).
     template <class T>
     T walk(const Tape& source, T* slots);
@@ -77,13 +86,16 @@ private:
     /// walk() of four lanes compiled for AVX2 (x86-64 builds for older CPUs only).
     IntervalLanes walk_avx2(const Tape& source, IntervalLanes* slots);
     /// Writes the tape pruned to box `lane` of the last evaluate() into `out`.
-    void simplify(Tape& out, int lane, ValueIds ids);
+    void simplify(Tape& out, int lane);
 
     /// The value `v` is over box `lane`: the winner of a min or max that has one.
     [[nodiscard]] ValueId resolve(ValueId v, int lane) const {
         return (v & clause_value) == 0 ? v : equals_[v & ~clause_value][static_cast<std::size_t>(lane)];
     }
     const Tape* source_ = nullptr;  // of the last evaluate()
+    std::vector<ClauseOperands> operands_;  // per clause of source_: the values its operands are
+    std::vector<ValueId> slot_value_;       // during a walk: the value each slot holds
+    ValueId result_value_ = 0;              // source_'s result
     std::array<std::size_t, lanes> choices_made_{};
     std::vector<Interval> slots_;
     std::vector<IntervalLanes> lane_slots_;         // made by the first lanes evaluate()
@@ -94,11 +106,9 @@ private:
     // Per clause and per constant of the source, stamped with epoch_ once live.
     std::vector<std::uint32_t> clause_live_, constant_live_;
     std::vector<std::uint32_t> working_slot_;   // per live clause: its slot in the pruned tape
-    std::vector<std::uint32_t> emitted_at_;     // per live clause: its place in kept_
     std::vector<std::uint32_t> constant_slot_;  // per live constant: its slot in the pruned tape
     std::vector<std::uint32_t> free_slots_;     // a stack of the free working slots
     std::vector<Clause> kept_;                  // the kept clauses, filled from the end
-    std::vector<ClauseOperands> kept_operands_;  // their operands' ids in the source
     std::uint32_t epoch_ = 0;
 };
 

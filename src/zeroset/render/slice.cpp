@@ -131,9 +131,6 @@ public:
         return &pruner_.simplified(pruned);
     }
 
-    /// A leaf's tape is only evaluated, never pruned again.
-    static constexpr TapePruner::ValueIds leaf_ids = TapePruner::ValueIds::Drop;
-
     /// The four sub-tiles of a tile whose sign is not decided, given the
     /// tape pruned to it, evaluated in one walk of that tape, each in a lane
     /// of its own. Fills those whose sign is decided; returns the tapes of
@@ -156,7 +153,7 @@ public:
             const auto [qx, qy] = quadrant_corner(x0, y0, half, k);
             const int lane = static_cast<int>(k);
             if (!fill_if_decided(qx, qy, std::min(qx + half, size_), std::min(qy + half, size_), f.lane(lane)))
-                below[k] = &pruner_.simplified(pruned[k], lane, half <= leaf_size ? leaf_ids : TapePruner::ValueIds::Keep);
+                below[k] = &pruner_.simplified(pruned[k], lane);
         }
         return below;
     }
