@@ -1,20 +1,18 @@
-// Interval evaluation records which value each clause's operands are (by
-// following which value each slot holds) and, for each min and max, the
-// side that wins over the box and so which value it equals; simplification
+// Interval evaluation follows which value each slot holds, in each lane's
+// box — a min or max with a side that wins over the box holds that side's
+// value — and records each clause's operands so resolved; simplification
 // is one backward pass over the source tape.
 #include "zeroset/expr/tape_pruner.hpp"
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 
 namespace zeroset {
 
 TapePruner::TapePruner(const Tape& full)
     : operands_(full.clauses().size()),
-      slot_value_(full.slot_count()),
+      slot_values_(full.slot_count()),
       slots_(full.slot_count()),
-      equals_(full.clauses().size()),
       constant_value_(full.slot_count()),
       clause_live_(full.clauses().size(), 0),
       constant_live_(full.slot_count(), 0),
@@ -24,38 +22,27 @@ TapePruner::TapePruner(const Tape& full)
 // Which side of a min or max wins over the box, if one does (neither
 // where an interval is empty: every comparison with NaN is false).
 [[gnu::always_inline]] inline void TapePruner::record_winners(Op op, const Interval& a, const Interval& b,
-                                                              const ClauseOperands& v, std::array<ValueId, lanes>& equals) {
+                                                              const ResolvedOperands& v, LaneIds& own) {
     const bool a_below = a.hi <= b.lo, b_below = b.hi <= a.lo;
     const bool left = op == Op::Min ? a_below : b_below, right = op == Op::Min ? b_below : a_below;
     if (!left && !right) return;
-    equals[0] = resolve(left ? v.a : v.b, 0);
+    own[0] = left ? v.a[0] : v.b[0];
     ++choices_made_[0];
 }
 
 // The same for four lanes at once, without a branch a lane: each lane
 // makes the one-box choice (left first).
 [[gnu::always_inline]] inline void TapePruner::record_winners(Op op, const IntervalLanes& a, const IntervalLanes& b,
-                                                              const ClauseOperands& v, std::array<ValueId, lanes>& equals) {
-    using Ids = ValueId __attribute__((vector_size(16)));
-    using IdMask = std::int32_t __attribute__((vector_size(16)));
+                                                              const ResolvedOperands& v, LaneIds& own) {
+    using IdMask = std::int32_t __attribute__((vector_size(4 * lanes)));
     const IntervalLanes::Mask a_below = a.hi <= b.lo, b_below = b.hi <= a.lo;
     const IntervalLanes::Mask left64 = op == Op::Min ? a_below : b_below;
     const IntervalLanes::Mask right64 = (op == Op::Min ? b_below : a_below) & ~left64;
     const IdMask left = __builtin_convertvector(left64, IdMask), right = __builtin_convertvector(right64, IdMask);
     const IdMask chosen = left | right;
     if ((chosen[0] | chosen[1] | chosen[2] | chosen[3]) == 0) return;
-    // An operand's value over each lane's box: a clause's own winners, or a constant or variable.
-    const auto lanes_of = [&](ValueId id) {
-        if ((id & clause_value) == 0) return Ids{id, id, id, id};
-        Ids row;
-        std::memcpy(&row, equals_[id & ~clause_value].data(), sizeof row);
-        return row;
-    };
-    Ids row;
-    std::memcpy(&row, equals.data(), sizeof row);
-    row = left ? lanes_of(v.a) : row;
-    row = right ? lanes_of(v.b) : row;
-    std::memcpy(equals.data(), &row, sizeof row);
+    own = left ? v.a : own;
+    own = right ? v.b : own;
     for (std::size_t k = 0; k < static_cast<std::size_t>(lanes); ++k) choices_made_[k] += chosen[k] != 0;
 }
 
@@ -65,12 +52,12 @@ template <class T>
 [[gnu::flatten]] T TapePruner::walk(const Tape& source, T* s) {
     source_ = &source;
     choices_made_.fill(0);
-    ValueId* held = slot_value_.data();  // the value in each slot
-    for (ValueId v = 0; v < 3; ++v) held[v] = v;
+    LaneIds* held = slot_values_.data();  // the value in each slot, in each lane
+    for (ValueId v = 0; v < 3; ++v) held[v] = LaneIds{} + v;
     for (const auto& [slot, value] : source.constants()) {
         s[slot] = T(value);
         constant_value_[slot] = value;
-        held[slot] = slot;
+        held[slot] = LaneIds{} + slot;
     }
     const std::vector<Clause>& clauses = source.clauses();
     for (std::size_t i = 0; i < clauses.size(); ++i) {
@@ -78,13 +65,12 @@ template <class T>
         const bool binary = op_arity(c.op) == 2;
         const T& a = s[c.a];
         const T& b = s[binary ? c.b : c.a];
-        ClauseOperands& v = operands_[i];
+        ResolvedOperands& v = operands_[i];
         v.a = held[c.a];
-        v.b = binary ? held[c.b] : v.a;
-        held[c.out] = clause_value | static_cast<ValueId>(i);
-        std::array<ValueId, lanes>& equals = equals_[i];
-        equals.fill(clause_value | static_cast<ValueId>(i));
-        if (c.op == Op::Min || c.op == Op::Max) record_winners(c.op, a, b, v, equals);
+        v.b = held[binary ? c.b : c.a];
+        LaneIds own = LaneIds{} + (clause_value | static_cast<ValueId>(i));
+        if (c.op == Op::Min || c.op == Op::Max) record_winners(c.op, a, b, v, own);
+        held[c.out] = own;
         s[c.out] = apply_op<T>(c.op, a, b, static_cast<int>(c.b));
     }
     result_value_ = held[source.result_slot()];
@@ -164,7 +150,7 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
         return constant_slot[v];
     };
     const std::vector<Clause>& clauses = source.clauses();
-    const ClauseOperands* operands = operands_.data();
+    const ResolvedOperands* operands = operands_.data();
     const std::size_t n = clauses.size();
     // At most every clause is kept, and each frees one slot.
     if (kept_.size() < n) {
@@ -172,16 +158,16 @@ IntervalLanes TapePruner::evaluate(const Tape& source, std::span<const Box3, lan
         free_slots_.resize(n);
     }
 
-    const std::uint32_t root_slot = take_slot(resolve(result_value_, lane));
+    const std::uint32_t root_slot = take_slot(result_value_[lane]);
     std::size_t first = n;  // the kept clauses fill kept_[first, n)
     for (std::size_t i = n; i-- > 0;) {
         // Only resolved values take slots, so a live clause is never a chosen min/max.
         if (clause_live[i] != epoch) continue;
         const Clause& c = clauses[i];
         const bool binary = op_arity(c.op) == 2;
-        const ClauseOperands& v = operands[i];
-        const std::uint32_t slot_a = take_slot(resolve(v.a, lane));
-        const std::uint32_t slot_b = binary ? take_slot(resolve(v.b, lane)) : c.b;
+        const ResolvedOperands& v = operands[i];
+        const std::uint32_t slot_a = take_slot(v.a[lane]);
+        const std::uint32_t slot_b = binary ? take_slot(v.b[lane]) : c.b;
         // Freed after the operands took theirs, so the output never aliases an
         // operand (the batch evaluator relies on that).
         free_slots_[free_count++] = working_slot[i];

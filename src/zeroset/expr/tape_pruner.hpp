@@ -69,39 +69,34 @@ private:
     /// ids are not, which is what following values needs.
     using ValueId = std::uint32_t;
     static constexpr ValueId clause_value = ValueId{1} << 31;
-    struct ClauseOperands {
-        ValueId a;
-        ValueId b;  // = a for unary ops (and Powi)
+    /// A value as each lane's box sees it: a min or max with a side that
+    /// wins over the box is that side's value there.
+    using LaneIds = ValueId __attribute__((vector_size(4 * lanes)));
+    struct ResolvedOperands {
+        LaneIds a;
+        LaneIds b;  // = a for unary ops (and Powi)
     };
 
     /// The walk of both evaluate()s, over the number type T (Interval or IntervalLanes).
     template <class T>
     T walk(const Tape& source, T* slots);
     /// For walk(): which side of a min or max wins over the box (in each
-    /// lane), into `equals` (the clause's row of equals_) and choices_made_.
-    void record_winners(Op op, const Interval& a, const Interval& b, const ClauseOperands& v,
-                        std::array<ValueId, lanes>& equals);
-    void record_winners(Op op, const IntervalLanes& a, const IntervalLanes& b, const ClauseOperands& v,
-                        std::array<ValueId, lanes>& equals);
+    /// lane): those lanes of `own` (the clause's value) become that side's,
+    /// and choices_made_ counts them.
+    void record_winners(Op op, const Interval& a, const Interval& b, const ResolvedOperands& v, LaneIds& own);
+    void record_winners(Op op, const IntervalLanes& a, const IntervalLanes& b, const ResolvedOperands& v, LaneIds& own);
     /// walk() of four lanes compiled for AVX2 (x86-64 builds for older CPUs only).
     IntervalLanes walk_avx2(const Tape& source, IntervalLanes* slots);
     /// Writes the tape pruned to box `lane` of the last evaluate() into `out`.
     void simplify(Tape& out, int lane);
 
-    /// The value `v` is over box `lane`: the winner of a min or max that has one.
-    [[nodiscard]] ValueId resolve(ValueId v, int lane) const {
-        return (v & clause_value) == 0 ? v : equals_[v & ~clause_value][static_cast<std::size_t>(lane)];
-    }
     const Tape* source_ = nullptr;  // of the last evaluate()
-    std::vector<ClauseOperands> operands_;  // per clause of source_: the values its operands are
-    std::vector<ValueId> slot_value_;       // during a walk: the value each slot holds
-    ValueId result_value_ = 0;              // source_'s result
+    std::vector<ResolvedOperands> operands_;  // per clause of source_: the values its operands are in each lane
+    std::vector<LaneIds> slot_values_;        // during a walk: the value each slot holds, in each lane
+    LaneIds result_value_{};                  // source_'s result, in each lane
     std::array<std::size_t, lanes> choices_made_{};
     std::vector<Interval> slots_;
     std::vector<IntervalLanes> lane_slots_;         // made by the first lanes evaluate()
-    // Per clause of the source tape and lane: the value it equals over the
-    // lane's box — its own, or for a min or max with a winner the winner's.
-    std::vector<std::array<ValueId, lanes>> equals_;
     std::vector<double> constant_value_;  // per slot of the source's constants: its value
     // Per clause and per constant of the source, stamped with epoch_ once live.
     std::vector<std::uint32_t> clause_live_, constant_live_;
