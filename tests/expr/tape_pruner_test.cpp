@@ -7,7 +7,6 @@
 #include <bit>
 #include <fstream>
 #include <random>
-#include <stdexcept>
 #include <string>
 
 #include "zeroset/expr/evaluator.hpp"
@@ -170,20 +169,31 @@ void expect_same_tape(const Tape& a, const Tape& b) {
 }
 
 /// The four-lane evaluate() against four one-box ones over random boxes:
-/// the same bounds, bit for bit, and the same pruned tapes.
+/// the same bounds, bit for bit, and the same pruned tapes — walking the
+/// full tape, and (odd rounds) a tape pruned to a box around all four, as
+/// slicing does; no pruned tape needs more slots than its source.
 void expect_lanes_like_single_boxes(const Tape& full, double reach, double largest_side, int rounds) {
     TapePruner lanes(full), single(full);
     std::mt19937 random(17);
     std::uniform_real_distribution<double> place(-reach, reach), side(0.0, largest_side);
+    Tape around;
     for (int round = 0; round < rounds; ++round) {
         std::array<Box3, TapePruner::lanes> boxes;
+        Box3 all = empty_box();
         for (Box3& box : boxes) {
             const Vec3d lo{place(random), place(random), place(random)};
             box = {lo, lo + Vec3d{side(random), side(random), side(random)}};
+            all = united(all, box);
         }
-        const IntervalLanes f = lanes.evaluate(full, boxes);
+        const Tape* source = &full;
+        if (round % 2 == 1) {
+            (void)single.prune(full, all, around);
+            EXPECT_LE(around.slot_count(), full.slot_count());
+            source = &around;
+        }
+        const IntervalLanes f = lanes.evaluate(*source, boxes);
         for (int k = 0; k < TapePruner::lanes; ++k) {
-            const Interval expected = single.evaluate(full, boxes[static_cast<std::size_t>(k)]);
+            const Interval expected = single.evaluate(*source, boxes[static_cast<std::size_t>(k)]);
             const Interval got = f.lane(k);
             ASSERT_TRUE((got.is_empty() && expected.is_empty()) ||
                         (std::bit_cast<std::uint64_t>(got.lo) == std::bit_cast<std::uint64_t>(expected.lo) &&
@@ -194,6 +204,8 @@ void expect_lanes_like_single_boxes(const Tape& full, double reach, double large
             const Tape& a = lanes.simplified(from_lanes, k);
             const Tape& b = single.simplified(from_single);
             expect_same_tape(a, b);
+            EXPECT_LE(a.slot_count(), source->slot_count());
+            expect_same_inside(full, a, boxes[static_cast<std::size_t>(k)], 4);
         }
     }
 }

@@ -24,7 +24,6 @@ struct Clause {
     std::uint32_t b;  // second operand slot; for Powi the exponent (as int)
 };
 
-
 class Tape {
 public:
     static constexpr std::uint32_t slot_x = 0, slot_y = 1, slot_z = 2;
