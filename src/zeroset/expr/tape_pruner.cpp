@@ -34,7 +34,7 @@ TapePruner::TapePruner(const Tape& full)
 // makes the one-box choice (left first).
 [[gnu::always_inline]] inline void TapePruner::record_winners(Op op, const IntervalLanes& a, const IntervalLanes& b,
                                                               const ResolvedOperands& v, LaneIds& own) {
-    using IdMask = std::int32_t __attribute__((vector_size(4 * lanes)));
+    using IdMask = std::int32_t __attribute__((vector_size(sizeof(std::int32_t) * lanes)));
     const IntervalLanes::Mask a_below = a.hi <= b.lo, b_below = b.hi <= a.lo;
     const IntervalLanes::Mask left64 = op == Op::Min ? a_below : b_below;
     const IntervalLanes::Mask right64 = (op == Op::Min ? b_below : a_below) & ~left64;

@@ -71,7 +71,7 @@ private:
     static constexpr ValueId clause_value = ValueId{1} << 31;
     /// A value as each lane's box sees it: a min or max with a side that
     /// wins over the box is that side's value there.
-    using LaneIds = ValueId __attribute__((vector_size(4 * lanes)));
+    using LaneIds = ValueId __attribute__((vector_size(sizeof(ValueId) * lanes)));
     struct ResolvedOperands {
         LaneIds a;
         LaneIds b;  // = a for unary ops (and Powi)
