@@ -62,12 +62,12 @@ template <class T>
     const std::vector<Clause>& clauses = source.clauses();
     for (std::size_t i = 0; i < clauses.size(); ++i) {
         const Clause& c = clauses[i];
-        const bool binary = op_arity(c.op) == 2;
+        const std::uint32_t second = op_arity(c.op) == 2 ? c.b : c.a;  // a unary op's (or Powi's) b is not a slot
         const T& a = s[c.a];
-        const T& b = s[binary ? c.b : c.a];
+        const T& b = s[second];
         ResolvedOperands& v = operands_[i];
         v.a = held[c.a];
-        v.b = held[binary ? c.b : c.a];
+        v.b = held[second];
         LaneIds own = LaneIds{} + (clause_value | static_cast<ValueId>(i));
         if (c.op == Op::Min || c.op == Op::Max) record_winners(c.op, a, b, v, own);
         held[c.out] = own;
