@@ -182,14 +182,19 @@ inline Interval sqrt(Interval a) {
     return {lo, rounding::up(std::sqrt(a.hi))};
 }
 
+namespace detail {
+// Below e^−708.3, just above the smallest normal double, a bound is 0
+// or 2.5·10⁻³⁰⁸ (> e^−708.3): no subnormal, as for products.
+constexpr double exp_normal_edge = -708.3;
+/// A lower bound of eˣ …
+inline double exp_below(double x) { return x < exp_normal_edge ? 0.0 : std::max(0.0, rounding::down2(std::exp(x))); }
+/// … and an upper one.
+inline double exp_above(double x) { return x < exp_normal_edge ? 2.5e-308 : rounding::up2(std::exp(x)); }
+}  // namespace detail
+
 inline Interval exp(Interval a) {
     if (a.is_empty()) return a;
-    // Below e^−708.3, just above the smallest normal double, a bound is 0
-    // or 2.5·10⁻³⁰⁸ (> e^−708.3): no subnormal, as for products.
-    constexpr double normal_edge = -708.3;
-    const double lo = a.lo < normal_edge ? 0.0 : std::max(0.0, rounding::down2(std::exp(a.lo)));
-    const double hi = a.hi < normal_edge ? 2.5e-308 : rounding::up2(std::exp(a.hi));
-    return {lo, hi};
+    return {detail::exp_below(a.lo), detail::exp_above(a.hi)};
 }
 
 inline Interval log(Interval a) {
@@ -290,15 +295,27 @@ inline bool atan2_may_jump(Interval y, Interval x) {
 }
 
 namespace detail {
-/// An enclosure of ln(eᵃ + eᵇ) at one point, by interval ops on
-/// max(a, b) + ln(1 + e^−|a−b|) (glibc's log1p is within 2 ulps).
-inline Interval log_sum_exp_at(double a, double b) {
+/// A bound of ln(eᵃ + eᵇ) at one point, from below or above, by interval
+/// ops on max(a, b) + ln(1 + e^−|a−b|) (glibc's log1p is within 2 ulps):
+/// one exp and one log1p, those of the end the bound needs.
+template <bool upper>
+inline double log_sum_exp_bound(double a, double b) {
     const double m = max(a, b);
-    if (m != m) return Interval::empty();
-    if (std::isinf(m)) return Interval(m);
-    const Interval e = exp(-abs(Interval(a) - Interval(b)));
-    const Interval tail{std::max(0.0, rounding::down2(std::log1p(e.lo))), rounding::up2(std::log1p(e.hi))};
-    return Interval(m) + tail;
+    if (m != m) return m;
+    if (std::isinf(m)) return m;
+    const Interval exponent = -abs(Interval(a) - Interval(b));
+    if constexpr (upper) {
+        const double tail = rounding::up2(std::log1p(exp_above(exponent.hi)));
+        return (Interval(m) + Interval(0.0, tail)).hi;
+    } else {
+        const double tail = std::max(0.0, rounding::down2(std::log1p(exp_below(exponent.lo))));
+        return (Interval(m) + Interval(tail, tail)).lo;
+    }
+}
+/// An enclosure of ln(eᵃ + eᵇ) at one point.
+inline Interval log_sum_exp_at(double a, double b) {
+    const double lo = log_sum_exp_bound<false>(a, b);
+    return lo != lo ? Interval::empty() : Interval{lo, log_sum_exp_bound<true>(a, b)};
 }
 }  // namespace detail
 
@@ -308,7 +325,8 @@ inline Interval log_sum_exp_at(double a, double b) {
 /// derivative's enclosure (e^a ∇a + e^b ∇b)/(e^a + e^b) explodes.
 inline Interval log_sum_exp(Interval a, Interval b) {
     if (a.is_empty() || b.is_empty()) return Interval::empty();
-    return {detail::log_sum_exp_at(a.lo, b.lo).lo, detail::log_sum_exp_at(a.hi, b.hi).hi};
+    const double lo = detail::log_sum_exp_bound<false>(a.lo, b.lo), hi = detail::log_sum_exp_bound<true>(a.hi, b.hi);
+    return lo != lo || hi != hi ? Interval::empty() : Interval{lo, hi};
 }
 /// The weight 1/(1 + e^(b−a)) of a in the derivative, decreasing in b − a:
 /// an enclosure within [0, 1] (all of it where b − a is ∞ − ∞).
