@@ -70,7 +70,9 @@ Jet<Interval> RayFunction::enclose(double a, double b, TraceCounters& counters) 
     return j;
 }
 
-Interval RayFunction::slope(double a, double b, TraceCounters& counters) {
+// Flattened: the interval products and quotients of the dual numbers are
+// inlined into the tape walk instead of called once an operation.
+[[gnu::flatten]] Interval RayFunction::slope(double a, double b, TraceCounters& counters) {
     ++counters.gradient_evaluations;
     // H′(t) = ∇f·x_d at a point of the segment, so the enclosure of ∇f·x_d
     // over the segment's box holds H′ there: one derivative carried instead
