@@ -183,12 +183,13 @@ inline Interval sqrt(Interval a) {
 }
 
 namespace detail {
-// Below e^−708.3, just above the smallest normal double, a bound is 0
-// or 2.5·10⁻³⁰⁸ (> e^−708.3): no subnormal, as for products.
-constexpr double exp_normal_edge = -708.3;
-/// A lower bound of eˣ …
+/// For x < −708.3, eˣ lies below 2.5·10⁻³⁰⁸, just above the smallest normal
+/// double; its bounds there are 0 and 2.5·10⁻³⁰⁸, never a subnormal (as
+/// for products).
+inline constexpr double exp_normal_edge = -708.3;
+/// A lower bound of eˣ.
 inline double exp_below(double x) { return x < exp_normal_edge ? 0.0 : std::max(0.0, rounding::down2(std::exp(x))); }
-/// … and an upper one.
+/// An upper bound of eˣ.
 inline double exp_above(double x) { return x < exp_normal_edge ? 2.5e-308 : rounding::up2(std::exp(x)); }
 }  // namespace detail
 
@@ -295,27 +296,21 @@ inline bool atan2_may_jump(Interval y, Interval x) {
 }
 
 namespace detail {
-/// A bound of ln(eᵃ + eᵇ) at one point, from below or above, by interval
-/// ops on max(a, b) + ln(1 + e^−|a−b|) (glibc's log1p is within 2 ulps):
-/// one exp and one log1p, those of the end the bound needs.
-template <bool upper>
-inline double log_sum_exp_bound(double a, double b) {
+/// Bounds of ln(eᵃ + eᵇ) at one point, from below and from above, as
+/// max(a, b) + ln(1 + e^−|a−b|) rounded outwards (glibc's log1p is within
+/// 2 ulps): each takes one exp and one log1p. Where max(a, b) is NaN or
+/// infinite, that is the bound (the caller makes a NaN the empty interval).
+inline double log_sum_exp_below(double a, double b) {
     const double m = max(a, b);
-    if (m != m) return m;
-    if (std::isinf(m)) return m;
-    const Interval exponent = -abs(Interval(a) - Interval(b));
-    if constexpr (upper) {
-        const double tail = rounding::up2(std::log1p(exp_above(exponent.hi)));
-        return (Interval(m) + Interval(0.0, tail)).hi;
-    } else {
-        const double tail = std::max(0.0, rounding::down2(std::log1p(exp_below(exponent.lo))));
-        return (Interval(m) + Interval(tail, tail)).lo;
-    }
+    if (m != m || std::isinf(m)) return m;
+    const double exponent = (-abs(Interval(a) - Interval(b))).lo;
+    return rounding::exact_zero_down(m + std::max(0.0, rounding::down2(std::log1p(exp_below(exponent)))));
 }
-/// An enclosure of ln(eᵃ + eᵇ) at one point.
-inline Interval log_sum_exp_at(double a, double b) {
-    const double lo = log_sum_exp_bound<false>(a, b);
-    return lo != lo ? Interval::empty() : Interval{lo, log_sum_exp_bound<true>(a, b)};
+inline double log_sum_exp_above(double a, double b) {
+    const double m = max(a, b);
+    if (m != m || std::isinf(m)) return m;
+    const double exponent = (-abs(Interval(a) - Interval(b))).hi;
+    return rounding::exact_zero_up(m + rounding::up2(std::log1p(exp_above(exponent))));
 }
 }  // namespace detail
 
@@ -325,7 +320,7 @@ inline Interval log_sum_exp_at(double a, double b) {
 /// derivative's enclosure (e^a ∇a + e^b ∇b)/(e^a + e^b) explodes.
 inline Interval log_sum_exp(Interval a, Interval b) {
     if (a.is_empty() || b.is_empty()) return Interval::empty();
-    const double lo = detail::log_sum_exp_bound<false>(a.lo, b.lo), hi = detail::log_sum_exp_bound<true>(a.hi, b.hi);
+    const double lo = detail::log_sum_exp_below(a.lo, b.lo), hi = detail::log_sum_exp_above(a.hi, b.hi);
     return lo != lo || hi != hi ? Interval::empty() : Interval{lo, hi};
 }
 /// The weight 1/(1 + e^(b−a)) of a in the derivative, decreasing in b − a:
