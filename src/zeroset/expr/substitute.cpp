@@ -29,6 +29,9 @@ Expr rebuild(const Expr& node, const Expr& a, const Expr& b) {
 ExprPoint coordinates() { return {var_x(), var_y(), var_z()}; }
 
 Expr substitute(const Expr& f, const ExprPoint& p) {
+    // f(x, y, z) is f: a POV-Ray function called as F(x, y, z) — in a loop
+    // that redefines F from itself, say — costs nothing per call.
+    if (p.x == var_x() && p.y == var_y() && p.z == var_z()) return f;
     std::unordered_map<const void*, Expr> done;
     done.emplace(var_x().id(), p.x);
     done.emplace(var_y().id(), p.y);

@@ -17,7 +17,7 @@ ExprPoint coordinates();
 /// f(p.x, p.y, p.z). Each distinct node of f is rebuilt once, by an
 /// iterative walk (a chain of 100 000 nodes does not recurse), through the
 /// ordinary builders: the result is hash-consed and constant-folded like any
-/// other expression.
+/// other expression. f itself where p is (x, y, z).
 Expr substitute(const Expr& f, const ExprPoint& p);
 
 }  // namespace zeroset
