@@ -88,8 +88,11 @@ void bind_expressions(py::module_& m) {
         .def("__pos__", [](const Expr& a) { return a; })
         .def("__call__", &evaluate, py::arg("x"), py::arg("y"), py::arg("z"),
              "f at (x, y, z): floats give a float; numpy arrays broadcast and give an array.")
-        .def("__repr__", [](const Expr& e) { return "Expr(" + e.to_string() + ")"; })
-        .def("__str__", &Expr::to_string)
+        // A DAG prints as the tree it unfolds to, which can be exponentially
+        // larger: the text stops, with "…", at 200 characters in repr() and
+        // at 10 million in str().
+        .def("__repr__", [](const Expr& e) { return "Expr(" + e.to_string(200) + ")"; })
+        .def("__str__", [](const Expr& e) { return e.to_string(10'000'000); })
         .def_property_readonly("is_constant", &Expr::is_constant_valued, "True when no x, y or z occurs in it.")
         .def_property_readonly("node_count", &Expr::node_count, "Distinct nodes of its DAG (shared parts once).");
     py::implicitly_convertible<double, Expr>();

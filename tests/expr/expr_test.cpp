@@ -140,6 +140,30 @@ TEST(Expr, OperandsAndPrinting) {
     EXPECT_EQ(hypot(X, Y).id(), hypot(Y, X).id());  // commutative: one node
 }
 
+TEST(Expr, PrintingADeepChainTakesNoStack) {
+    // 100 000 nested calls: a recursive printer overflowed the stack here.
+    constexpr int depth = 100'000;
+    Expr f = X;
+    for (int i = 0; i < depth; ++i) f = sin(f);
+    const std::string text = f.to_string();
+    ASSERT_EQ(text.size(), std::size_t{depth} * 5 + 1);  // "sin(" and ")" each level, and "x"
+    EXPECT_EQ(text.substr(0, 8), "sin(sin(");
+    EXPECT_EQ(text.substr(std::size_t{depth} * 4 - 4, 7), "sin(x))");
+}
+
+TEST(Expr, PrintingStopsAtItsLimitWhateverTheDagUnfoldsTo) {
+    // Each level uses the one below twice: 2^60 nodes once unfolded.
+    Expr f = X;
+    for (int i = 0; i < 60; ++i) f = f + sin(f);
+    const std::string text = f.to_string(1000);
+    EXPECT_EQ(text.size(), 1000 + std::string("…").size());
+    EXPECT_EQ(text.substr(1000), "…");
+    EXPECT_EQ(sin(X).to_string(6), "sin(x)");  // no "…" when the text fits
+    std::string out = "f = ";
+    EXPECT_FALSE(append_infix(out, f, {}, 50));
+    EXPECT_EQ(out.size(), 50U);  // the limit counts what `out` held before
+}
+
 /// ln of a sum of exps is one log-sum-exp op (tight enclosures, no
 /// overflow); a positive constant term c counts as e^ln c.
 TEST(Expr, LogOfExpSumIsLogSumExp) {

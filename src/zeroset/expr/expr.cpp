@@ -5,10 +5,10 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <mutex>
 #include <optional>
-#include <sstream>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -238,32 +238,95 @@ std::size_t Expr::node_count() const {
     return seen.size();
 }
 
-std::string Expr::to_string() const {
-    std::ostringstream out;
-    out.precision(17);
-    switch (op()) {
-        case Op::Const: out << value(); break;
-        case Op::VarX: out << "x"; break;
-        case Op::VarY: out << "y"; break;
-        case Op::VarZ: out << "z"; break;
-        case Op::Add: out << "(" << operand(0).to_string() << " + " << operand(1).to_string() << ")"; break;
-        case Op::Sub: out << "(" << operand(0).to_string() << " - " << operand(1).to_string() << ")"; break;
-        case Op::Mul: out << "(" << operand(0).to_string() << " * " << operand(1).to_string() << ")"; break;
-        case Op::Div: out << "(" << operand(0).to_string() << " / " << operand(1).to_string() << ")"; break;
-        case Op::Neg: out << "-" << operand(0).to_string(); break;
-        case Op::Powi: {
-            // (−x)^2, not −x^2, which reads as −(x^2); likewise a power of a power.
-            const Expr base = operand(0);
-            const bool wrap = base.op() == Op::Neg || base.op() == Op::Powi || (base.is_constant() && base.value() < 0.0);
-            out << (wrap ? "(" : "") << base.to_string() << (wrap ? ")" : "") << "^" << exponent();
-            break;
+namespace {
+
+/// One step of writing an expression out: a node to write, a piece of
+/// text, or a Powi node's exponent (written after its base).
+struct TextStep {
+    enum class Kind { Node, Text, Exponent } kind;
+    Expr node;
+    std::string_view text;
+};
+
+void append_number(std::string& out, double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", v);
+    out += buffer;
+}
+
+}  // namespace
+
+bool append_infix(std::string& out, const Expr& e, const NameOf& name_of, std::size_t max_chars) {
+    std::vector<TextStep> steps{{TextStep::Kind::Node, e, {}}};
+    // The steps after a node's first piece, pushed last first.
+    const auto then = [&steps](std::initializer_list<TextStep> rest) {
+        steps.insert(steps.end(), std::rbegin(rest), std::rend(rest));
+    };
+    const auto node = [](const Expr& n) { return TextStep{TextStep::Kind::Node, n, {}}; };
+    const auto text = [](std::string_view t) { return TextStep{TextStep::Kind::Text, Expr(), t}; };
+    while (!steps.empty()) {
+        if (out.size() > max_chars) {
+            out.resize(max_chars);
+            return false;
         }
-        default:
-            out << op_name(op()) << "(" << operand(0).to_string();
-            if (op_arity(op()) == 2) out << ", " << operand(1).to_string();
-            out << ")";
+        const TextStep step = std::move(steps.back());
+        steps.pop_back();
+        if (step.kind == TextStep::Kind::Text) {
+            out += step.text;
+            continue;
+        }
+        const Expr& n = step.node;
+        if (step.kind == TextStep::Kind::Exponent) {
+            out += '^';
+            out += std::to_string(n.exponent());
+            continue;
+        }
+        if (name_of) {
+            if (const std::string* name = name_of(n)) {
+                out += *name;
+                continue;
+            }
+        }
+        const auto infix = [&](std::string_view op) {
+            out += '(';
+            then({node(n.operand(0)), text(op), node(n.operand(1)), text(")")});
+        };
+        switch (n.op()) {
+            case Op::Const: append_number(out, n.value()); break;
+            case Op::VarX: out += 'x'; break;
+            case Op::VarY: out += 'y'; break;
+            case Op::VarZ: out += 'z'; break;
+            case Op::Add: infix(" + "); break;
+            case Op::Sub: infix(" - "); break;
+            case Op::Mul: infix(" * "); break;
+            case Op::Div: infix(" / "); break;
+            case Op::Neg:
+                out += '-';
+                then({node(n.operand(0))});
+                break;
+            case Op::Powi: {
+                // (−x)^2, not −x^2, which reads as −(x^2); likewise a power of a power.
+                const Expr base = n.operand(0);
+                const bool wrap =
+                    base.op() == Op::Neg || base.op() == Op::Powi || (base.is_constant() && base.value() < 0.0);
+                if (wrap) out += '(';
+                then({node(base), text(wrap ? ")" : ""), TextStep{TextStep::Kind::Exponent, n, {}}});
+                break;
+            }
+            default:
+                out += op_name(n.op());
+                out += '(';
+                if (op_arity(n.op()) == 2) then({node(n.operand(0)), text(", "), node(n.operand(1)), text(")")});
+                else then({node(n.operand(0)), text(")")});
+        }
     }
-    return out.str();
+    return true;
+}
+
+std::string Expr::to_string(std::size_t max_chars) const {
+    std::string out;
+    if (!append_infix(out, *this, {}, max_chars)) out += "…";
+    return out;
 }
 
 std::optional<Op> op_from_name(std::string_view name) {

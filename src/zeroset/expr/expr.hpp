@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -42,8 +43,10 @@ public:
 
     /// Number of distinct nodes in the DAG.
     [[nodiscard]] std::size_t node_count() const;
-    /// Infix rendering, for messages and debugging.
-    [[nodiscard]] std::string to_string() const;
+    /// Infix text in the scene language's syntax. A DAG is written as the
+    /// tree it unfolds to, which can be far larger (exponentially, where
+    /// parts are shared): past `max_chars` the text stops, ending in "…".
+    [[nodiscard]] std::string to_string(std::size_t max_chars = std::string::npos) const;
 
     /// The node for `op` over the given operands (constant-folded and hash-consed).
     static Expr make(Op op, const Expr& a, const Expr& b, int n = 0);
@@ -100,6 +103,15 @@ std::size_t max_expression_nodes();
 std::size_t set_max_expression_nodes(std::size_t limit);
 /// The expression nodes alive now.
 std::size_t live_expression_nodes();
+
+/// A name to write instead of a node's text (a let's, in the scene
+/// writer), or null to write the node out.
+using NameOf = std::function<const std::string*(const Expr&)>;
+/// Appends e's infix text (Expr::to_string) to `out`, with the nodes that
+/// `name_of` names written as their names. Stops when `out` grows past
+/// `max_chars` — cut there, and false. Iterative: however deep the
+/// expression, it costs heap, not stack.
+bool append_infix(std::string& out, const Expr& e, const NameOf& name_of, std::size_t max_chars);
 
 /// The coordinate variables.
 Expr var_x();

@@ -18,6 +18,9 @@ namespace zeroset {
 
 namespace {
 
+/// How much of an expression a message quotes.
+constexpr std::size_t message_expression_chars = 200;
+
 constexpr std::array<std::string_view, 11> object_keys{"surface", "bounds", "method", "solver", "normals", "partition",
                                                        "material", "cut",    "open",   "clip",   "gate"};
 constexpr std::array<std::string_view, 9> node_keywords{"object",   "group", "union",   "intersection", "difference",
@@ -182,7 +185,7 @@ SceneNodePtr SceneParser::object(const Token& keyword) {
         in_->fail(*gate_at, "a gate is for bounded objects: an object with bounds none is a half-space, which every ray meets");
     if (vanishes_throughout(object.surface, object.bounds))
         in_->fail(surface_at, "the surface is 0 at every point tried in its bounds (" +
-                                  object.surface.to_string() +
+                                  object.surface.to_string(message_expression_chars) +
                                   "): it must be negative inside and positive outside to have an inside at all");
     return node;
 }
