@@ -5,6 +5,8 @@
 
 #include <filesystem>
 
+#include "zeroset/expr/evaluator.hpp"
+#include "zeroset/expr/tape.hpp"
 #include "zeroset/render/renderer.hpp"
 #include "zeroset/scene/scene_writer.hpp"
 
@@ -64,6 +66,43 @@ TEST(SceneWriter, WritesEachKindOfNode) {
     EXPECT_EQ(objects[0].object().gate->box.hi.z, 0.5);
     EXPECT_EQ(objects[1].object().blob->components().size(), 2U);
     EXPECT_TRUE(objects[5].object().fractal);
+}
+
+/// f and g agree at points spread over [−2, 2]³.
+void expect_same_function(const Expr& f, const Expr& g) {
+    const Tape tf(f), tg(g);
+    Evaluator<double> ef(tf), eg(tg);
+    for (int i = 0; i < 64; ++i) {
+        const double x = -2.0 + 0.0625 * i, y = 1.5 - 0.05 * i, z = 0.03 * i - 1.0;
+        EXPECT_EQ(ef(x, y, z), eg(x, y, z)) << "at (" << x << ", " << y << ", " << z << ")";
+    }
+}
+
+TEST(SceneWriter, DeepAndSharedExpressionsReadBackThroughLets) {
+    // A chain far deeper than the parser's nesting limit, the same chain
+    // with each level's part used twice, and a DAG whose levels each use
+    // the one below twice (2^40 nodes unfolded).
+    const Expr X = var_x(), Y = var_y(), Z = var_z();
+    const Expr ball = square(X) + square(Y) + square(Z) - 1.0;
+    Expr chain = ball, deep = ball, shared = ball;
+    for (int i = 0; i < 5000; ++i) chain = sin(chain);
+    for (int i = 0; i < 5000; ++i) deep = sin(deep) + 0.5 * deep;
+    for (int i = 0; i < 40; ++i) shared = shared + 0.001 * sin(shared);
+    for (const Expr& f : {chain, deep, shared}) {
+        Scene s = parse("object { surface x bounds box((-2, -2, -2), (2, 2, 2)) }");
+        std::const_pointer_cast<SceneNode>(s.nodes.front())->object.surface = f;
+        const std::string text = write_scene(s);
+        EXPECT_LT(text.size(), 2'000'000U);
+        EXPECT_NE(text.find("\nlet part_1 = "), std::string::npos);
+        const Scene t = parse(text);
+        expect_same_function(f, placed_objects(t).front().object().surface);
+    }
+}
+
+TEST(SceneWriter, SmallSharedPartsAreWrittenInPlace) {
+    const Scene s = parse("object { surface (x*x + 1)^2 + sin(x*x + 1) bounds box((-2, -2, -2), (2, 2, 2)) }");
+    const std::string text = write_scene(s);
+    EXPECT_EQ(text.find("let "), std::string::npos) << text;
 }
 
 }  // namespace

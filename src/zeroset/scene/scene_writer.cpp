@@ -1,7 +1,9 @@
 // Scene → scene-language text: statement by statement, the tree depth
 // first, each node with its keys, material and transform. A node the tree
 // reaches more than once (a shape placed as instances) is written once, as a
-// shape, and placed by `instance` wherever it occurs.
+// shape, and placed by `instance` wherever it occurs. Expressions name their
+// large shared and deep parts as lets (expression_writer.hpp), written
+// before the shapes and objects.
 #include "zeroset/scene/scene_writer.hpp"
 
 #include <cmath>
@@ -9,6 +11,8 @@
 #include <functional>
 #include <sstream>
 #include <unordered_map>
+
+#include "zeroset/scene/expression_writer.hpp"
 
 namespace zeroset {
 
@@ -28,6 +32,9 @@ class Writer {
 public:
     explicit Writer(std::ostringstream& out) : out_(out) {}
 
+    /// The lets the expressions written so far need.
+    [[nodiscard]] const std::string& lets() const { return expressions_.lets(); }
+
     void line(const std::string& text) { out_ << std::string(static_cast<std::size_t>(2 * depth_), ' ') << text << "\n"; }
 
     void open(const std::string& head) {
@@ -41,8 +48,9 @@ public:
 
     void material(const Material& m) {
         const std::string color = m.color_pattern
-                                      ? "(" + (*m.color_pattern)[0].to_string() + ", " + (*m.color_pattern)[1].to_string() +
-                                            ", " + (*m.color_pattern)[2].to_string() + ")"
+                                      ? "(" + expressions_.text((*m.color_pattern)[0]) + ", " +
+                                            expressions_.text((*m.color_pattern)[1]) + ", " +
+                                            expressions_.text((*m.color_pattern)[2]) + ")"
                                       : vector(m.color);
         line("material { color " + color + "  ambient " + number(m.ambient) + "  diffuse " + number(m.diffuse) +
              "  specular " + number(m.specular) + "  shininess " + number(m.shininess) + "  reflection " +
@@ -124,7 +132,7 @@ public:
         if (o.sweep) return sweep(n);
         if (o.fractal) return fractal(n);
         open("object" + quoted(n.name));
-        line("surface " + o.surface.to_string());
+        line("surface " + expressions_.text(o.surface));
         bounds(o.bounds);
         if (o.method != Method::Auto) line("method " + std::string(method_name(o.method)));
         if (o.solver != PolynomialSolver::Fast) line("solver " + std::string(polynomial_solver_name(o.solver)));
@@ -132,7 +140,7 @@ public:
         if (o.partition != Partition::Auto) line("partition " + std::string(partition_name(o.partition)));
         if (o.cut_by_bounds) line("cut on");
         if (o.open) line("open on");
-        if (o.clip) line("clip " + o.clip->to_string());
+        if (o.clip) line("clip " + expressions_.text(*o.clip));
         if (o.gate) bounds(*o.gate, "gate");
         modifiers(n);
         close();
@@ -207,6 +215,7 @@ public:
 
 private:
     std::ostringstream& out_;
+    ExpressionWriter expressions_;
     int depth_ = 0;
     std::unordered_map<const SceneNode*, int> uses_;
     std::unordered_map<const SceneNode*, std::string> shape_names_;
@@ -235,11 +244,16 @@ std::string write_scene(const Scene& scene, const std::string& header) {
     w.line("background " + vector(scene.background));
     w.line("ambient " + vector(scene.ambient));
     out << "\n";
-    w.shapes(scene.nodes);
+    // The shapes and objects, after the lets their expressions need.
+    std::ostringstream body;
+    Writer b(body);
+    b.shapes(scene.nodes);
     for (const SceneNodePtr& n : scene.nodes) {
-        out << "\n";
-        w.node(*n);
+        body << "\n";
+        b.node(*n);
     }
+    if (!b.lets().empty()) out << b.lets();
+    out << body.str();
     return out.str();
 }
 
