@@ -159,6 +159,7 @@ TEST(Expr, PrintingStopsAtItsLimitWhateverTheDagUnfoldsTo) {
     EXPECT_EQ(text.size(), 1000 + std::string("…").size());
     EXPECT_EQ(text.substr(1000), "…");
     EXPECT_EQ(sin(X).to_string(6), "sin(x)");  // no "…" when the text fits
+    EXPECT_EQ(sin(X).to_string(5), "sin(x…");  // nor past the limit by its last piece
     std::string out = "f = ";
     EXPECT_FALSE(append_infix(out, f, {}, 50));
     EXPECT_EQ(out.size(), 50U);  // the limit counts what `out` held before

@@ -264,11 +264,7 @@ bool append_infix(std::string& out, const Expr& e, const NameOf& name_of, std::s
     };
     const auto node = [](const Expr& n) { return TextStep{TextStep::Kind::Node, n, {}}; };
     const auto text = [](std::string_view t) { return TextStep{TextStep::Kind::Text, Expr(), t}; };
-    while (!steps.empty()) {
-        if (out.size() > max_chars) {
-            out.resize(max_chars);
-            return false;
-        }
+    while (!steps.empty() && out.size() <= max_chars) {
         const TextStep step = std::move(steps.back());
         steps.pop_back();
         if (step.kind == TextStep::Kind::Text) {
@@ -320,7 +316,9 @@ bool append_infix(std::string& out, const Expr& e, const NameOf& name_of, std::s
                 else then({node(n.operand(0)), text(")")});
         }
     }
-    return true;
+    if (out.size() <= max_chars) return true;
+    out.resize(max_chars);
+    return false;
 }
 
 std::string Expr::to_string(std::size_t max_chars) const {

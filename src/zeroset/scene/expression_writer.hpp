@@ -8,6 +8,7 @@
 // names.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <unordered_map>
 
