@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -138,6 +140,18 @@ TEST(Expr, OperandsAndPrinting) {
     EXPECT_EQ(ceil(X).to_string(), "-floor(-x)");
     EXPECT_EQ(atan(X).to_string(), "atan(x)");
     EXPECT_EQ(hypot(X, Y).id(), hypot(Y, X).id());  // commutative: one node
+}
+
+TEST(Expr, NumbersAreWrittenToReadBackExactly) {
+    EXPECT_EQ(number_text(0.1), "0.10000000000000001");
+    EXPECT_EQ(number_text(-2.0), "-2");
+    EXPECT_EQ(number_text(1e300), "1.0000000000000001e+300");
+    for (const double v : {0.1, 1.0 / 3.0, -7.25e-300, 4.9e-324, 1.7976931348623157e308})
+        EXPECT_EQ(std::strtod(number_text(v).c_str(), nullptr), v);
+    // No literal reads as ∞ or NaN: expressions that fold to them.
+    EXPECT_EQ(number_text(std::numeric_limits<double>::infinity()), "(1e308 * 10)");
+    EXPECT_EQ(number_text(-std::numeric_limits<double>::infinity()), "(-1e308 * 10)");
+    EXPECT_EQ(number_text(std::numeric_limits<double>::quiet_NaN()), "(0 * (1e308 * 10))");
 }
 
 TEST(Expr, PrintingADeepChainTakesNoStack) {

@@ -99,6 +99,22 @@ TEST(SceneWriter, DeepAndSharedExpressionsReadBackThroughLets) {
     }
 }
 
+TEST(SceneWriter, LogSumExpReadsBack) {
+    // ln of a sum of exps becomes the log-sum-exp op, whose .vm name is no
+    // scene function: it is written as log_sum_exp.
+    const Scene s = parse("object { surface ln(exp(x) + exp(y)) - z bounds box((-2, -2, -2), (2, 2, 2)) }");
+    const Expr f = placed_objects(s).front().object().surface;
+    ASSERT_EQ(f.operand(0).op(), Op::LogSumExp);
+    const Scene t = parse(write_scene(s));
+    expect_same_function(f, placed_objects(t).front().object().surface);
+}
+
+TEST(SceneWriter, InfiniteConstantsReadBack) {
+    const Scene s = parse("object { surface max(x^2 + y^2 + z^2 - 1, -1e308 * 10) bounds box((-2, -2, -2), (2, 2, 2)) }");
+    const Scene t = parse(write_scene(s));
+    expect_same_function(placed_objects(s).front().object().surface, placed_objects(t).front().object().surface);
+}
+
 TEST(SceneWriter, SmallSharedPartsAreWrittenInPlace) {
     const Scene s = parse("object { surface (x*x + 1)^2 + sin(x*x + 1) bounds box((-2, -2, -2), (2, 2, 2)) }");
     const std::string text = write_scene(s);

@@ -2,10 +2,11 @@
 #include "zeroset/expr/expr.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <mutex>
 #include <optional>
@@ -248,13 +249,16 @@ struct TextStep {
     std::string_view text;
 };
 
-void append_number(std::string& out, double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", v);
-    out += buffer;
-}
-
 }  // namespace
+
+std::string number_text(double v) {
+    // The scene language has no literal for ∞ or NaN: expressions that fold to them.
+    if (v != v) return "(0 * (1e308 * 10))";
+    if (std::isinf(v)) return v > 0.0 ? "(1e308 * 10)" : "(-1e308 * 10)";
+    std::array<char, 32> buffer{};
+    const auto written = std::to_chars(buffer.data(), buffer.data() + buffer.size(), v, std::chars_format::general, 17);
+    return {buffer.data(), written.ptr};
+}
 
 bool append_infix(std::string& out, const Expr& e, const NameOf& name_of, std::size_t max_chars) {
     std::vector<TextStep> steps{{TextStep::Kind::Node, e, {}}};
@@ -288,7 +292,7 @@ bool append_infix(std::string& out, const Expr& e, const NameOf& name_of, std::s
             then({node(n.operand(0)), text(op), node(n.operand(1)), text(")")});
         };
         switch (n.op()) {
-            case Op::Const: append_number(out, n.value()); break;
+            case Op::Const: out += number_text(n.value()); break;
             case Op::VarX: out += 'x'; break;
             case Op::VarY: out += 'y'; break;
             case Op::VarZ: out += 'z'; break;
@@ -310,7 +314,9 @@ bool append_infix(std::string& out, const Expr& e, const NameOf& name_of, std::s
                 break;
             }
             default:
-                out += op_name(n.op());
+                // The scene language's function is the op's .vm name with
+                // '_' for '-' (log-sum-exp is log_sum_exp).
+                for (const char c : op_name(n.op())) out += c == '-' ? '_' : c;
                 out += '(';
                 if (op_arity(n.op()) == 2) then({node(n.operand(0)), text(", "), node(n.operand(1)), text(")")});
                 else then({node(n.operand(0)), text(")")});

@@ -104,13 +104,18 @@ std::size_t set_max_expression_nodes(std::size_t limit);
 /// The expression nodes alive now.
 std::size_t live_expression_nodes();
 
+/// A number as the scene language's text writes it: 17 significant digits
+/// (read back, the same double), whatever the locale; ∞ and NaN as
+/// constant expressions that fold to them.
+std::string number_text(double v);
+
 /// A name to write instead of a node's text (a let's, in the scene
 /// writer), or null to write the node out.
 using NameOf = std::function<const std::string*(const Expr&)>;
 /// Appends e's infix text (Expr::to_string) to `out`, with the nodes that
-/// `name_of` names written as their names. Stops when `out` grows past
-/// `max_chars` — cut there, and false. Iterative: however deep the
-/// expression, it costs heap, not stack.
+/// `name_of` names written as their names. Stops when `out` — what it held
+/// before included — grows past `max_chars`: cut there, and false.
+/// Iterative: however deep the expression, it costs heap, not stack.
 bool append_infix(std::string& out, const Expr& e, const NameOf& name_of, std::size_t max_chars);
 
 /// The coordinate variables.

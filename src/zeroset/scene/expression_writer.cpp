@@ -16,8 +16,9 @@ std::string ExpressionWriter::text(const Expr& e) {
         const auto found = names_.find(n.id());
         return found == names_.end() ? nullptr : &found->second;
     };
-    // The nodes below e, operands before their users, and how many users
-    // each has there; a part named already is not looked into.
+    // The nodes below e, operands before their users, and how many operand
+    // slots there hold each (a + a: two); a part named already is not
+    // looked into.
     std::vector<Expr> order;
     std::unordered_map<const void*, int> uses;
     {
@@ -67,6 +68,7 @@ std::string ExpressionWriter::text(const Expr& e) {
             append_infix(lets_, n, name_of, std::numeric_limits<std::size_t>::max());
             lets_ += "\n";
             names_.emplace(n.id(), std::move(name));
+            named_.push_back(n);
             x = {1, 0};
         }
         extent.emplace(n.id(), x);

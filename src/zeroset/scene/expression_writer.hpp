@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "zeroset/expr/expr.hpp"
 
@@ -31,7 +32,8 @@ public:
     static constexpr int nesting = 200;
 
 private:
-    std::unordered_map<const void*, std::string> names_;  // by node id, the parts named so far
+    std::unordered_map<const void*, std::string> names_;  // by node id, the parts named so far …
+    std::vector<Expr> named_;                             // … kept alive, so that no id is reused
     std::string lets_;
 };
 

@@ -7,7 +7,6 @@
 #include "zeroset/scene/scene_writer.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <sstream>
 #include <unordered_map>
@@ -18,13 +17,9 @@ namespace zeroset {
 
 namespace {
 
-std::string number(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", v);
-    return buffer;
+std::string vector(const Vec3d& v) {
+    return "(" + number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + ")";
 }
-
-std::string vector(const Vec3d& v) { return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")"; }
 
 std::string quoted(const std::string& name) { return name.empty() ? "" : " \"" + name + "\""; }
 
@@ -52,16 +47,16 @@ public:
                                             expressions_.text((*m.color_pattern)[1]) + ", " +
                                             expressions_.text((*m.color_pattern)[2]) + ")"
                                       : vector(m.color);
-        line("material { color " + color + "  ambient " + number(m.ambient) + "  diffuse " + number(m.diffuse) +
-             "  specular " + number(m.specular) + "  shininess " + number(m.shininess) + "  reflection " +
-             number(m.reflection) + " }");
+        line("material { color " + color + "  ambient " + number_text(m.ambient) + "  diffuse " +
+             number_text(m.diffuse) + "  specular " + number_text(m.specular) + "  shininess " +
+             number_text(m.shininess) + "  reflection " + number_text(m.reflection) + " }");
     }
 
     void transform(const Mat4& t) {
         if (t.is_identity()) return;
         std::string text = "matrix (";
         for (std::size_t r = 0; r < 3; ++r)
-            for (std::size_t c = 0; c < 4; ++c) text += number(t.m[r][c]) + (r == 2 && c == 3 ? ")" : ", ");
+            for (std::size_t c = 0; c < 4; ++c) text += number_text(t.m[r][c]) + (r == 2 && c == 3 ? ")" : ", ");
         line(text);
     }
 
@@ -70,7 +65,9 @@ public:
         switch (b.kind) {
             case Bounds::Kind::None: line(key + " none"); break;
             case Bounds::Kind::Box: line(key + " box(" + vector(b.box.lo) + ", " + vector(b.box.hi) + ")"); break;
-            case Bounds::Kind::Sphere: line(key + " sphere(" + vector(b.center) + ", " + number(b.radius) + ")"); break;
+            case Bounds::Kind::Sphere:
+                line(key + " sphere(" + vector(b.center) + ", " + number_text(b.radius) + ")");
+                break;
         }
     }
 
@@ -150,20 +147,20 @@ public:
         const Object& o = n.object;
         const BlobModel& m = *o.blob;
         open("blob" + quoted(n.name));
-        line("kernel " + std::string(blob_kernel_info(m.kernel()).name) + "  threshold " + number(m.threshold()));
-        if (o.blob_tolerance != default_blinn_tolerance) line("tolerance " + number(o.blob_tolerance));
+        line("kernel " + std::string(blob_kernel_info(m.kernel()).name) + "  threshold " + number_text(m.threshold()));
+        if (o.blob_tolerance != default_blinn_tolerance) line("tolerance " + number_text(o.blob_tolerance));
         if (o.blob_quadratics) line("quadratics on");
         if (o.method != Method::Auto) line("method " + std::string(method_name(o.method)));
         for (const BlobComponent& c : m.components()) {
             std::string text = "component { ";
             if (c.end) text += "from " + vector(c.center) + "  to " + vector(*c.end);
             else text += "center " + vector(c.center);
-            text += "  radius " + number(c.radius) + "  strength " + number(c.strength);
-            if (m.kernel() == BlobKernel::Blinn) text += "  blobbiness " + number(c.blobbiness);
+            text += "  radius " + number_text(c.radius) + "  strength " + number_text(c.strength);
+            if (m.kernel() == BlobKernel::Blinn) text += "  blobbiness " + number_text(c.blobbiness);
             if (!c.end && !c.shape.is_identity()) {
                 text += "  matrix (";
                 for (std::size_t r = 0; r < 3; ++r)
-                    for (std::size_t k = 0; k < 4; ++k) text += number(k == 3 ? 0.0 : c.shape.m[r][k]) + (r == 2 && k == 3 ? ")" : ", ");
+                    for (std::size_t k = 0; k < 4; ++k) text += number_text(k == 3 ? 0.0 : c.shape.m[r][k]) + (r == 2 && k == 3 ? ")" : ", ");
             }
             line(text + " }");
         }
@@ -182,14 +179,14 @@ public:
             if (s.degree() == 2) b = {b[0], b[0] + 2.0 / 3.0 * (b[1] - b[0]), b[2] + 2.0 / 3.0 * (b[1] - b[2]), b[2]};
             if (s.degree() == 1) {
                 line("curve linear");
-                line("point " + vector(b[0]) + " radius " + number(s.radius_from()));
-                line("point " + vector(b[1]) + " radius " + number(s.radius_to()));
+                line("point " + vector(b[0]) + " radius " + number_text(s.radius_from()));
+                line("point " + vector(b[1]) + " radius " + number_text(s.radius_to()));
             } else {
-                line("curve bezier  radius " + number(s.radius_from()));  // the control points' (not used)
-                line("point " + vector(b[0]) + " radius " + number(s.radius_from()));
+                line("curve bezier  radius " + number_text(s.radius_from()));  // the control points' (not used)
+                line("point " + vector(b[0]) + " radius " + number_text(s.radius_from()));
                 line("point " + vector(b[1]));
                 line("point " + vector(b[2]));
-                line("point " + vector(b[3]) + " radius " + number(s.radius_to()));
+                line("point " + vector(b[3]) + " radius " + number_text(s.radius_to()));
             }
             if (!several) modifiers(n);
             close();
@@ -204,11 +201,12 @@ public:
         const FractalParameters& p = n.object.fractal->parameters();
         open("fractal" + quoted(n.name));
         line("kind " + std::string(fractal_kind_info(p.kind).name) + "  iterations " + std::to_string(p.iterations) +
-             "  detail " + number(n.object.fractal_detail));
+             "  detail " + number_text(n.object.fractal_detail));
         if (p.kind == FractalKind::QuaternionJulia)
-            line("c " + vector({p.c.r, p.c.i, p.c.j}) + "  ck " + number(p.c.k) + "  slice " + number(p.slice));
+            line("c " + vector({p.c.r, p.c.i, p.c.j}) + "  ck " + number_text(p.c.k) + "  slice " +
+                 number_text(p.slice));
         else
-            line("power " + number(p.power));
+            line("power " + number_text(p.power));
         modifiers(n);
         close();
     }
@@ -236,8 +234,8 @@ std::string write_scene(const Scene& scene, const std::string& header) {
            std::to_string(i.reflection_depth) + " }");
     const Camera& c = scene.camera;
     w.line("camera { from " + vector(c.from) + "  at " + vector(c.at) + "  up " + vector(c.up) + "  fov " +
-           number(c.fov_degrees) + (c.shift_right != 0.0 ? "  shift_right " + number(c.shift_right) : "") +
-           (c.shift_up != 0.0 ? "  shift_up " + number(c.shift_up) : "") + " }");
+           number_text(c.fov_degrees) + (c.shift_right != 0.0 ? "  shift_right " + number_text(c.shift_right) : "") +
+           (c.shift_up != 0.0 ? "  shift_up " + number_text(c.shift_up) : "") + " }");
     for (const Light& l : scene.lights)
         w.line("light { " + (l.kind == Light::Kind::Point ? "from " + vector(l.position) : "direction " + vector(l.direction)) +
                "  color " + vector(l.color) + "  shadows " + (l.casts_shadows ? "on" : "off") + " }");
