@@ -239,6 +239,33 @@ std::size_t Expr::node_count() const {
     return seen.size();
 }
 
+std::vector<Expr> operands_first(const Expr& root, const std::function<bool(const Expr&)>& closed) {
+    std::vector<Expr> order;
+    std::unordered_map<const void*, bool> visited;  // false: on the stack, true: listed
+    std::vector<std::pair<Expr, bool>> stack{{root, false}};  // (node, operands listed)
+    while (!stack.empty()) {
+        auto [e, expanded] = stack.back();
+        stack.pop_back();
+        if (expanded) {
+            if (!visited[e.id()]) {
+                visited[e.id()] = true;
+                order.push_back(e);
+            }
+            continue;
+        }
+        if (visited.contains(e.id())) continue;
+        visited[e.id()] = false;
+        stack.emplace_back(e, true);
+        const int arity = closed && closed(e) ? 0 : op_arity(e.op());
+        const bool swap = arity == 2 && e.operand(1).creation_order() < e.operand(0).creation_order();
+        for (int i = arity - 1; i >= 0; --i) {
+            const Expr child = e.operand(swap ? 1 - i : i);
+            if (!visited.contains(child.id())) stack.emplace_back(child, false);
+        }
+    }
+    return order;
+}
+
 namespace {
 
 /// One step of writing an expression out: a node to write, a piece of

@@ -12,6 +12,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "zeroset/expr/op.hpp"
 
@@ -103,6 +104,11 @@ std::size_t max_expression_nodes();
 std::size_t set_max_expression_nodes(std::size_t limit);
 /// The expression nodes alive now.
 std::size_t live_expression_nodes();
+
+/// The DAG's nodes from `root` down, each once, operands before their
+/// users; of two operands, the one made first is walked first. A node that
+/// `closed` says yes to is listed without its operands. Iterative.
+std::vector<Expr> operands_first(const Expr& root, const std::function<bool(const Expr&)>& closed = {});
 
 /// A number as the scene language's text writes it: 17 significant digits
 /// (read back, the same double), whatever the locale; ∞ and NaN as

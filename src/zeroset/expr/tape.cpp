@@ -10,43 +10,14 @@ namespace zeroset {
 
 namespace {
 
-/// The DAG's nodes in post order (operands before users), each once; of two
-/// operands, the one made first is walked first. Models are written in a
-/// good schedule, so keeping their order keeps few values live at once;
-/// the values themselves do not depend on this order.
-std::vector<Expr> topological_order(const Expr& root) {
-    std::vector<Expr> order;
-    std::unordered_map<const void*, bool> visited;  // false: on stack, true: emitted
-    std::vector<std::pair<Expr, bool>> stack{{root, false}};
-    while (!stack.empty()) {
-        auto [e, expanded] = stack.back();
-        stack.pop_back();
-        if (expanded) {
-            if (!visited[e.id()]) {
-                visited[e.id()] = true;
-                order.push_back(e);
-            }
-            continue;
-        }
-        if (visited.contains(e.id())) continue;
-        visited[e.id()] = false;
-        stack.emplace_back(e, true);
-        const int arity = op_arity(e.op());
-        const bool swap = arity == 2 && e.operand(1).creation_order() < e.operand(0).creation_order();
-        for (int i = arity - 1; i >= 0; --i) {
-            const Expr child = e.operand(swap ? 1 - i : i);
-            if (!visited.contains(child.id())) stack.emplace_back(child, false);
-        }
-    }
-    return order;
-}
-
 bool is_leaf(Op op) { return op_arity(op) == 0; }
 
 }  // namespace
 
 Tape::Tape(const Expr& root) {
-    const std::vector<Expr> order = topological_order(root);
+    // Models are written in a good schedule; keeping their order (of two
+    // operands, the one made first is walked first) keeps few values live.
+    const std::vector<Expr> order = operands_first(root);
 
     // Value number of each node = its index in `order`; find each value's last use.
     std::unordered_map<const void*, std::size_t> index;

@@ -11,7 +11,6 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
-#include <vector>
 
 #include "zeroset/expr/expr.hpp"
 
@@ -32,8 +31,11 @@ public:
     static constexpr int nesting = 200;
 
 private:
-    std::unordered_map<const void*, std::string> names_;  // by node id, the parts named so far …
-    std::vector<Expr> named_;                             // … kept alive, so that no id is reused
+    struct Named {
+        Expr node;  // kept alive, so that no id is reused
+        std::string name;
+    };
+    std::unordered_map<const void*, Named> names_;  // by node id, the parts named so far
     std::string lets_;
 };
 
