@@ -117,5 +117,56 @@ TEST(Blob, TheTubeHoldsEveryRayWithinTheMappingsRounding) {
     EXPECT_GT(pieces, 50000);  // most cases are decided and in reach, not waved through
 }
 
+// The division-free test that a ray passes a cylinder's axis line beside
+// its reach (Blob::passes_beside_axis) rejects only rays that are farther
+// from the line than the radius, by the distance worked out in long double
+// — from rays nearly along the line to rays far from the segment's start
+// — and rejects nearly every ray that is farther by twice its margin.
+TEST(Blob, TheAxisTestRejectsOnlyRaysBesideTheTube) {
+    std::mt19937_64 rng(12);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    const auto random_vector = [&](double size) { return Vec3d{unit(rng), unit(rng), unit(rng)} * size; };
+    int rejected = 0, clearly_beside = 0, clearly_beside_rejected = 0;
+    for (int n = 0; n < 200000; ++n) {
+        const double size = std::pow(10.0, -3.0 + 6.0 * fraction(rng));
+        const Vec3d point = random_vector(size * std::pow(10.0, 4.0 * fraction(rng)));
+        const Vec3d direction = random_vector(size);
+        const double radius = size * (0.1 + fraction(rng));
+        // A direction near the line's about one time in four, within 10⁻¹⁰ to 1 radian.
+        Vec3d dir = random_vector(1.0);
+        if (fraction(rng) < 0.25) dir = direction + random_vector(length(direction) * std::pow(10.0, -10.0 * fraction(rng)));
+        // Passing the line at up to twice the radius, far along it or not.
+        const Vec3d origin = point + direction * (100.0 * unit(rng)) + random_vector(2.0 * radius) -
+                             dir * (std::pow(10.0, 6.0 * fraction(rng)) * unit(rng));
+        const Ray ray{origin, dir};
+        const bool beside = Blob::passes_beside_axis(ray, length(origin), length(dir),
+                                                     {point, direction, length(point), length(direction)}, radius);
+        // The lines' distance, |e·(d × w)|/|d × w|, in long double.
+        std::array<long double, 3> e{}, d{}, w{};
+        for (int k = 0; k < 3; ++k) {
+            e[k] = static_cast<long double>(origin[k]) - static_cast<long double>(point[k]);
+            d[k] = dir[k];
+            w[k] = direction[k];
+        }
+        const std::array<long double, 3> normal{d[1] * w[2] - d[2] * w[1], d[2] * w[0] - d[0] * w[2],
+                                                d[0] * w[1] - d[1] * w[0]};
+        const long double normal_length =
+            std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+        const long double distance = std::abs(e[0] * normal[0] + e[1] * normal[1] + e[2] * normal[2]) / normal_length;
+        if (beside) {
+            ++rejected;
+            ASSERT_GT(distance, radius) << n;
+        }
+        const long double sine = normal_length / (length(dir) * length(direction));
+        const double margin = 2e-8 * (radius + length(origin) + length(point));  // twice the test's own
+        if (distance > radius + margin && sine > 1e-5L) {
+            ++clearly_beside;
+            clearly_beside_rejected += beside;
+        }
+    }
+    EXPECT_GT(rejected, 20000);
+    EXPECT_GT(clearly_beside_rejected, 0.999 * clearly_beside);
+}
+
 }  // namespace
 }  // namespace zeroset

@@ -162,6 +162,9 @@ void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add, bool beside
         if (const auto k = part_on_ray(c, q, everywhere)) add(*k);
         return;
     }
+    if (passes_beside_axis(ray, sizes.origin_length, sizes.dir_length,
+                           {c.center, c.axis, c.center_length, c.axis_length}, c.reach_length))
+        return;
     // The ray's place along the axis, s(t) = s0 + t·sd: the body for s in
     // [0, 1], the round ends beyond. Where they meet, the two kernels agree
     // to first order (distance to the end = distance to the axis), so the
@@ -207,6 +210,22 @@ void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add, bool beside
     if (const auto k = part_on_ray(c, across, body)) add(*k);
     if (within(last))
         if (const auto k = part_on_ray(c, forwards ? about_end() : about_start(), last)) add(*k);
+}
+
+bool Blob::passes_beside_axis(const Ray& ray, double origin_length, double dir_length, const AxisLine& axis,
+                              double radius) {
+    // The lines' distance is |e·n|/|n|, e = o − p and n = d × w. Where
+    // |n| ≥ 10⁻⁶·|d|·|w|, the rounding of e and n changes e·n by under
+    // 10⁻⁹·(|o| + |p|)·|n| and |n|² by a part in 10⁹: the margin of
+    // 10⁻⁸·(R + |o| + |p|) covers both, and the exact test's own rounding
+    // (a few units of the same sizes). NaN and ∞ compare false: not beside.
+    const Vec3d normal = cross(ray.dir, axis.direction);
+    const double normal_square = dot(normal, normal);
+    const double sizes = dir_length * axis.direction_length;
+    if (!(normal_square > 1e-12 * sizes * sizes)) return false;
+    const double apart = dot(ray.origin - axis.point, normal);
+    const double keep = radius + 1e-8 * (radius + origin_length + axis.point_length);
+    return apart * apart > keep * keep * normal_square;
 }
 
 std::optional<Span> Blob::tube_on_ray(const MappedRay& across, double reach) {

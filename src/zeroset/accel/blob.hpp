@@ -148,6 +148,20 @@ public:
     /// reach of the line, widened past any rounding (the whole ray when
     /// that is not decided); nothing when it never is.
     [[nodiscard]] static std::optional<Span> tube_on_ray(const MappedRay& across, double reach);
+    /// A cylinder's axis line in the blob's space, with the sizes the
+    /// rounding of passes_beside_axis is measured in.
+    struct AxisLine {
+        Vec3d point, direction;
+        double point_length, direction_length;
+    };
+    /// Whether the ray passes farther than `radius` from the line by a margin
+    /// far wider than the rounding of this test and of the exact one: a
+    /// cylinder it holds meets none of its parts (the round ends lie within
+    /// that distance of the line too). Division-free, in the blob's own
+    /// space, before the component is mapped; rays within 10⁻⁶ radians of
+    /// the line's direction are never rejected.
+    [[nodiscard]] static bool passes_beside_axis(const Ray& ray, double origin_length, double dir_length,
+                                                 const AxisLine& axis, double radius);
 
 private:
     /// One component, prepared.
