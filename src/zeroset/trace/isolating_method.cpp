@@ -9,6 +9,10 @@ HitResult IsolatingMethod::first_hit(RayFunction& h, Span span, TraceCounters& c
     const double start = h.value(span.t0, counters);
     if (start != start) return {std::nullopt, HitStatus::Failed};
     if (start <= 0.0) return {span.t0, HitStatus::Ok};  // the ray starts in the solid
+    return first_hit_from_outside(h, span, counters);
+}
+
+HitResult IsolatingMethod::first_hit_from_outside(RayFunction& h, Span span, TraceCounters& counters) {
     std::optional<double> first;
     auto take_first = [&first](double t) {
         first = t;

@@ -13,6 +13,7 @@ namespace zeroset {
 class IsolatingMethod : public RootFinder {
 public:
     HitResult first_hit(RayFunction& h, Span span, TraceCounters& counters) final;
+    HitResult first_hit_from_outside(RayFunction& h, Span span, TraceCounters& counters) final;
     HitStatus all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) final;
 
 protected:

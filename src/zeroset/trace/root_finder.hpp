@@ -73,6 +73,14 @@ class RootFinder {
 public:
     virtual ~RootFinder() = default;
     virtual HitResult first_hit(RayFunction& h, Span span, TraceCounters& counters) = 0;
+    /// first_hit for a caller that knows the ray is outside the solid at t0
+    /// (H(t0) > 0) — a later octree cell of a ray whose start was checked
+    /// and whose earlier cells hold no root — so the start need not be
+    /// evaluated again: the first root of H in the span. Methods that need
+    /// H(t0) anyway keep first_hit's.
+    virtual HitResult first_hit_from_outside(RayFunction& h, Span span, TraceCounters& counters) {
+        return first_hit(h, span, counters);
+    }
     /// Appends the roots in the span to `hits`; returns how the search ended.
     virtual HitStatus all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) = 0;
 };

@@ -34,6 +34,10 @@ HitResult SphereMethod::first_hit(RayFunction& h, Span span, TraceCounters& coun
     const double start = h.value(span.t0, counters);
     if (std::isnan(start)) return {std::nullopt, HitStatus::Failed};
     if (start <= 0.0) return {span.t0, HitStatus::Ok};  // the ray starts in the solid
+    return first_hit_from_outside(h, span, counters);
+}
+
+HitResult SphereMethod::first_hit_from_outside(RayFunction& h, Span span, TraceCounters& counters) {
     const std::uint64_t nans = counters.nan_evaluations;
     const Crossing hit = crossing(h, span, 1.0, counters);
     if (hit.t) return {hit.t, HitStatus::Ok};

@@ -17,6 +17,7 @@ public:
     explicit SphereMethod(const RootFinderSettings& settings);
 
     HitResult first_hit(RayFunction& h, Span span, TraceCounters& counters) override;
+    HitResult first_hit_from_outside(RayFunction& h, Span span, TraceCounters& counters) override;
     HitStatus all_hits(RayFunction& h, Span span, std::vector<double>& hits, TraceCounters& counters) override;
 
 private:
