@@ -126,12 +126,16 @@ HitResult ImplicitLeaf::first_hit_in_cells(LeafScratch& leaf, Span span, TraceSc
     if (start <= 0.0) return {span.t0, HitStatus::Ok};
     // Outside at the start, so outside at every cell's start: no root lies
     // in the cells before it (their methods found none) nor in the discarded
-    // cells between (the octree's rule), and f keeps its sign where it has
-    // no root. So no cell evaluates its start again.
+    // cells between (the Lipschitz rule's proof), and f keeps its sign where
+    // it has no root. So no cell evaluates its start again. Bloomenthal's
+    // rules may discard surface: there each cell checks its start, as the
+    // method does alone.
+    const bool outside_at_cells = partition_ == Partition::Lipschitz;
     HitResult hit;
     octree_->walk(leaf.h.ray(), span, [&](Span cell_span, const OctreeCell& cell) {
         enter_cell(leaf, cell, scratch);
-        hit = leaf.finder->first_hit_from_outside(leaf.h, cell_span, scratch.counters);
+        hit = outside_at_cells ? leaf.finder->first_hit_from_outside(leaf.h, cell_span, scratch.counters)
+                               : leaf.finder->first_hit(leaf.h, cell_span, scratch.counters);
         // A failure in one cell (NaN, a budget spent) fails the query, as it
         // fails a method over the whole span: a later hit is not trusted.
         if (hit.status == HitStatus::Failed) hit.t.reset();
