@@ -119,34 +119,44 @@ TEST(Blob, TheTubeHoldsEveryRayWithinTheMappingsRounding) {
 
 // The division-free test that a ray passes a cylinder's axis line beside
 // its reach (Blob::passes_beside_axis) rejects only rays that are farther
-// from the line than the radius, by the distance worked out in long double
-// — from rays nearly along the line to rays far from the segment's start
-// — and rejects nearly every ray that is farther by twice its margin.
+// than the radius from the line through the segment's exact ends — the
+// axis it is given is end − centre rounded — by the distance worked out in
+// long double: from rays nearly along the line to rays far from the
+// segment's start, at every scale from 10⁻²⁰⁰ to 10²⁰⁰ (where squares
+// would underflow or overflow, it does not decide). At ordinary scales it
+// rejects nearly every ray that is farther by twice its margin.
 TEST(Blob, TheAxisTestRejectsOnlyRaysBesideTheTube) {
     std::mt19937_64 rng(12);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
     const auto random_vector = [&](double size) { return Vec3d{unit(rng), unit(rng), unit(rng)} * size; };
     int rejected = 0, clearly_beside = 0, clearly_beside_rejected = 0;
     for (int n = 0; n < 200000; ++n) {
-        const double size = std::pow(10.0, -3.0 + 6.0 * fraction(rng));
-        const Vec3d point = random_vector(size * std::pow(10.0, 4.0 * fraction(rng)));
-        const Vec3d direction = random_vector(size);
+        const bool ordinary = fraction(rng) < 0.8;
+        const double scale = ordinary ? 1.0 : std::pow(10.0, -200.0 + 400.0 * fraction(rng));
+        const double size = scale * std::pow(10.0, -3.0 + 6.0 * fraction(rng));
+        const Vec3d center = random_vector(size * std::pow(10.0, 4.0 * fraction(rng)));
+        // An end far from the centre one time in four (its rounded axis then
+        // misses the exact end by a unit of the axis's length).
+        const Vec3d end = center + random_vector(fraction(rng) < 0.25 ? size * 1e6 : size);
+        const Vec3d direction = end - center;
         const double radius = size * (0.1 + fraction(rng));
         // A direction near the line's about one time in four, within 10⁻¹⁰ to 1 radian.
-        Vec3d dir = random_vector(1.0);
+        Vec3d dir = random_vector(scale);
         if (fraction(rng) < 0.25) dir = direction + random_vector(length(direction) * std::pow(10.0, -10.0 * fraction(rng)));
-        // Passing the line at up to twice the radius, far along it or not.
-        const Vec3d origin = point + direction * (100.0 * unit(rng)) + random_vector(2.0 * radius) -
-                             dir * (std::pow(10.0, 6.0 * fraction(rng)) * unit(rng));
+        // Passing the line at up to twice the radius, near either end or far along it.
+        const Vec3d near_line = fraction(rng) < 0.5 ? end : center + direction * (100.0 * unit(rng));
+        const Vec3d origin =
+            near_line + random_vector(2.0 * radius) - dir * (std::pow(10.0, 6.0 * fraction(rng)) * unit(rng) / length(dir) * size);
         const Ray ray{origin, dir};
         const bool beside = Blob::passes_beside_axis(ray, length(origin), length(dir),
-                                                     {point, direction, length(point), length(direction)}, radius);
-        // The lines' distance, |e·(d × w)|/|d × w|, in long double.
+                                                     {center, direction, length(center), length(direction)}, radius);
+        // The distance between the ray's line and the line through the exact
+        // ends, |e·(d × w)|/|d × w|, in long double.
         std::array<long double, 3> e{}, d{}, w{};
         for (int k = 0; k < 3; ++k) {
-            e[k] = static_cast<long double>(origin[k]) - static_cast<long double>(point[k]);
+            e[k] = static_cast<long double>(origin[k]) - static_cast<long double>(center[k]);
             d[k] = dir[k];
-            w[k] = direction[k];
+            w[k] = static_cast<long double>(end[k]) - static_cast<long double>(center[k]);
         }
         const std::array<long double, 3> normal{d[1] * w[2] - d[2] * w[1], d[2] * w[0] - d[0] * w[2],
                                                 d[0] * w[1] - d[1] * w[0]};
@@ -157,15 +167,55 @@ TEST(Blob, TheAxisTestRejectsOnlyRaysBesideTheTube) {
             ++rejected;
             ASSERT_GT(distance, radius) << n;
         }
-        const long double sine = normal_length / (length(dir) * length(direction));
-        const double margin = 2e-8 * (radius + length(origin) + length(point));  // twice the test's own
-        if (distance > radius + margin && sine > 1e-5L) {
+        const long double sine = normal_length / (length(dir) * std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+        const double margin = 2e-8 * (radius + length(origin) + length(center) + length(direction));  // twice the test's own
+        if (ordinary && distance > radius + margin && sine > 1e-5L) {
             ++clearly_beside;
             clearly_beside_rejected += beside;
         }
     }
     EXPECT_GT(rejected, 20000);
     EXPECT_GT(clearly_beside_rejected, 0.999 * clearly_beside);
+}
+
+// The same test on rays that pass the segment's end: grazing its reach by a
+// part in 10³ to 10¹² either way at ordinary sizes (most of those a little
+// beyond are turned away), and within or beyond a thin cylinder's reach
+// whose radius squared underflows beside an axis of ordinary length (none
+// may be turned away wrongly: there the test does not decide).
+TEST(Blob, TheAxisTestKeepsRaysGrazingTheReachAtAnyScale) {
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    const auto random_vector = [&](double size) { return Vec3d{unit(rng), unit(rng), unit(rng)} * size; };
+    int ordinary_rejected = 0;
+    for (int n = 0; n < 100000; ++n) {
+        const bool tiny = n % 2 == 1;
+        const double radius = tiny ? std::pow(10.0, -166.0 + 8.0 * fraction(rng)) : 0.5 + fraction(rng);
+        const Vec3d center = random_vector(tiny ? radius : 1.0);
+        const Vec3d end = center + random_vector(10.0);
+        const Vec3d direction = end - center;
+        // Across the axis at the end, at the radius give or take a part in 10³ to 10¹².
+        const Vec3d across = normalize(cross(direction, random_vector(1.0)));
+        const double off = tiny ? radius * (0.2 + 2.0 * fraction(rng))
+                                : radius * (1.0 + unit(rng) * std::pow(10.0, -3.0 - 9.0 * fraction(rng)));
+        const Vec3d target = end + across * off;
+        const Vec3d dir = normalize(cross(across, random_vector(1.0)));  // across the offset: nearest at the target
+        const Ray ray{target - dir * (tiny ? 3.0 * radius : 3.0), dir};
+        if (!Blob::passes_beside_axis(ray, length(ray.origin), length(dir),
+                                      {center, direction, length(center), length(direction)}, radius))
+            continue;
+        ordinary_rejected += !tiny;
+        // Turned away: the ray passes the exact end farther than the radius (in long double).
+        long double dd = 0, ed = 0, ee = 0;
+        for (int k = 0; k < 3; ++k) {
+            const long double e = static_cast<long double>(ray.origin[k]) - static_cast<long double>(end[k]);
+            dd += static_cast<long double>(dir[k]) * dir[k];
+            ed += e * dir[k];
+            ee += e * e;
+        }
+        ASSERT_GT(ee - ed * ed / dd, static_cast<long double>(radius) * radius) << n << (tiny ? " (tiny)" : "");
+    }
+    EXPECT_GT(ordinary_rejected, 5000);
 }
 
 }  // namespace

@@ -35,6 +35,30 @@ TEST(SphereMethod, HitsTheUnitSphereAlongALongDirection) {
     }
 }
 
+// A caller may claim the ray is outside at t0 and be wrong — a later octree
+// cell after a pole, where H changed sign without a root: the march stops
+// there at once, and the start is the hit, as first_hit has it (not a miss
+// of the whole span). Through the ball's centre, where H < 0, and from
+// inside 1 − 2/x past its pole at 0, where H < 0 too.
+TEST(SphereMethod, AStartWronglyClaimedOutsideIsTheHit) {
+    const Expr ball = sqrt(square(var_x()) + square(var_y()) + square(var_z())) - 1.0;
+    const Expr past_pole = 1.0 - 2.0 / var_x();
+    for (const Expr& f : {ball, past_pole}) {
+        const Tape tape(f);
+        const auto method = make_root_finder(Method::Sphere, tape, settings_for_scale(10.0));
+        const Ray ray{{0.5, 0.1, 0.2}, {1, 0, 0}};
+        RayFunction h(tape);
+        h.set_ray(ray);
+        TraceCounters counters;
+        ASSERT_LT(h.value(0.0, counters), 0.0);
+        const HitResult claimed = method->first_hit_from_outside(h, {0.0, 4.0}, counters);
+        const HitResult checked = method->first_hit(h, {0.0, 4.0}, counters);
+        EXPECT_EQ(claimed.status, HitStatus::Ok);
+        EXPECT_EQ(claimed.t, std::optional<double>(0.0));
+        EXPECT_EQ(checked.t, claimed.t);
+    }
+}
+
 TEST(SphereMethod, AStepThatLandsOnTheRootByAnExactBoundStillHits) {
     // Planes: H is linear and its Lipschitz bound exact (|n·x_d|), so a step
     // H/L lands on the root — or a few ulps past it by the rounding of H,

@@ -216,16 +216,20 @@ bool Blob::passes_beside_axis(const Ray& ray, double origin_length, double dir_l
                               double radius) {
     // The lines' distance is |e·n|/|n|, e = o − p and n = d × w. Where
     // |n| ≥ 10⁻⁶·|d|·|w|, the rounding of e and n changes e·n by under
-    // 10⁻⁹·(|o| + |p|)·|n| and |n|² by a part in 10⁹: the margin of
-    // 10⁻⁸·(R + |o| + |p|) covers both, and the exact test's own rounding
-    // (a few units of the same sizes). NaN and ∞ compare false: not beside.
+    // 10⁻⁹·(|o| + |p|)·|n| and |n|² by a part in 10⁹. The margin of
+    // 10⁻⁸·(R + |o| + |p| + |w|) covers both, the exact tests' own rounding
+    // (a few units of the same sizes), and the far end's offset from this
+    // line (w = end − p rounded: a unit of |w|). Squares outside 2^±900 are
+    // not decided here (an underflow would drop the margin or the angle
+    // guard); NaN and ∞ compare false: not beside.
     const Vec3d normal = cross(ray.dir, axis.direction);
     const double normal_square = dot(normal, normal);
     const double sizes = dir_length * axis.direction_length;
-    if (!(normal_square > 1e-12 * sizes * sizes)) return false;
+    if (!well_scaled(normal_square) || !(normal_square > 1e-12 * sizes * sizes)) return false;
     const double apart = dot(ray.origin - axis.point, normal);
-    const double keep = radius + 1e-8 * (radius + origin_length + axis.point_length);
-    return apart * apart > keep * keep * normal_square;
+    const double keep = radius + 1e-8 * (radius + origin_length + axis.point_length + axis.direction_length);
+    const double bound = keep * keep * normal_square;
+    return well_scaled(keep * keep) && well_scaled(bound) && apart * apart > bound;
 }
 
 std::optional<Span> Blob::tube_on_ray(const MappedRay& across, double reach) {

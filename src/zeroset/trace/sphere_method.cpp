@@ -20,7 +20,10 @@ SphereMethod::SphereMethod(const RootFinderSettings& settings)
 
 Crossing SphereMethod::crossing(RayFunction& h, Span span, double side, TraceCounters& counters) {
     const std::uint64_t nans = counters.nan_evaluations;
-    const Crossing marched = tracer_.first_crossing(h, span, side, counters);
+    return refined(h, tracer_.first_crossing(h, span, side, counters), nans, counters);
+}
+
+Crossing SphereMethod::refined(RayFunction& h, const Crossing& marched, std::uint64_t nans, TraceCounters& counters) {
     const std::optional<double> t = marched.t;
     if (!t || counters.nan_evaluations != nans) return {std::nullopt, marched.gave_up};
     if (marched.exact) return marched;
@@ -39,7 +42,13 @@ HitResult SphereMethod::first_hit(RayFunction& h, Span span, TraceCounters& coun
 
 HitResult SphereMethod::first_hit_from_outside(RayFunction& h, Span span, TraceCounters& counters) {
     const std::uint64_t nans = counters.nan_evaluations;
-    const Crossing hit = crossing(h, span, 1.0, counters);
+    const Crossing marched = tracer_.first_crossing(h, span, 1.0, counters);
+    // Not outside at t0 after all (a pole crossed in an earlier octree cell
+    // changes H's sign without a root): the march stops there at once, on
+    // H(t0) ≤ 0, and the start is the hit, as first_hit has it.
+    if (marched.t == span.t0 && marched.end == span.t0 && !marched.exact && counters.nan_evaluations == nans)
+        return {span.t0, HitStatus::Ok};
+    const Crossing hit = refined(h, marched, nans, counters);
     if (hit.t) return {hit.t, HitStatus::Ok};
     return {std::nullopt, hit.gave_up || counters.nan_evaluations != nans ? HitStatus::Failed : HitStatus::NoHit};
 }

@@ -6,6 +6,8 @@
 // chord thinner than that keeps both its roots, as with the interval method.
 #pragma once
 
+#include <cstdint>
+
 #include "zeroset/trace/interval_method.hpp"
 #include "zeroset/trace/root_finder.hpp"
 #include "zeroset/trace/sphere_tracer.hpp"
@@ -24,6 +26,8 @@ private:
     /// The first crossing in the span (entering the solid when side = 1,
     /// leaving it when −1), refined; nothing after a NaN.
     Crossing crossing(RayFunction& h, Span span, double side, TraceCounters& counters);
+    /// The march's crossing refined to full precision (`nans`: the NaN count before the march).
+    static Crossing refined(RayFunction& h, const Crossing& marched, std::uint64_t nans, TraceCounters& counters);
 
     SphereTracer tracer_;
     IntervalMethod close_roots_;  // for all hits: roots within 2ε of the last one
