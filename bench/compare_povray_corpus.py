@@ -19,7 +19,8 @@ For each scene:
     magenta exactly; the share of pixels where the two masks disagree;
   - POV-Ray's own "Trace Time" and zeroset's render time (its summary line's
     total: preparing the objects and tracing, without reading the scene),
-    each the median of --repeat runs, and their ratio.
+    each the median of --repeat runs (the two renderers alternated), and
+    their ratio.
 Prints a Markdown table; --keep DIR keeps the images (pov_X.ppm, zs_X.ppm).
 """
 import argparse
@@ -143,8 +144,11 @@ def main():
         include_dir = os.path.dirname(scene)
         pov_out, zs_out = os.path.join(work, f"pov_{name}.ppm"), os.path.join(work, f"zs_{name}.ppm")
         try:
-            pov_times = [run_povray(scene, pov_out, width, height, args.threads, include_dir) for _ in range(args.repeat)]
-            zs_runs = [run_zeroset(zeroset, scene, zs_out, width, height, args.threads, include_dir) for _ in range(args.repeat)]
+            # Alternated, so that both renderers see the shared machine's same moments.
+            pov_times, zs_runs = [], []
+            for _ in range(args.repeat):
+                pov_times.append(run_povray(scene, pov_out, width, height, args.threads, include_dir))
+                zs_runs.append(run_zeroset(zeroset, scene, zs_out, width, height, args.threads, include_dir))
             # The masks: the same scene against a magenta background.
             masked = os.path.join(work, f"{name}_mask.pov")
             with open(scene, "rb") as src, open(masked, "wb") as dst:
