@@ -76,8 +76,10 @@ public:
     /// first_hit for a caller that knows the ray is outside the solid at t0
     /// (H(t0) > 0) — a later octree cell of a ray whose start was checked
     /// and whose earlier cells hold no root — so the start need not be
-    /// evaluated again: the first root of H in the span. Methods that need
-    /// H(t0) anyway keep first_hit's.
+    /// evaluated again: the first root of H in the span. Where the claim is
+    /// wrong (a pole before t0 changed H's sign without a root), sphere
+    /// tracing answers t0, as first_hit would, and the isolating methods the
+    /// span's first root. Methods that need H(t0) anyway keep first_hit's.
     virtual HitResult first_hit_from_outside(RayFunction& h, Span span, TraceCounters& counters) {
         return first_hit(h, span, counters);
     }
