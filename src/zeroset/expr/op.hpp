@@ -56,16 +56,14 @@ inline constexpr int op_count = 0
     ;
 
 /// Number of expression operands (Powi's exponent is an immediate, not an operand).
-constexpr int op_arity(Op op) {
-    switch (op) {
-#define ZEROSET_OP_ARITY(name, vm, arity, expr) \
-    case Op::name:                              \
-        return arity;
-        ZEROSET_OPS(ZEROSET_OP_ARITY)
+/// A table rather than a switch: tape walks ask for every clause, and a
+/// load does not branch.
+inline constexpr std::uint8_t op_arities[] = {
+#define ZEROSET_OP_ARITY(name, vm, arity, expr) arity,
+    ZEROSET_OPS(ZEROSET_OP_ARITY)
 #undef ZEROSET_OP_ARITY
-    }
-    return 0;
-}
+};
+constexpr int op_arity(Op op) { return op_arities[static_cast<std::uint8_t>(op)]; }
 
 /// The op's name in fidget's .vm format (also used when printing).
 constexpr std::string_view op_name(Op op) {
