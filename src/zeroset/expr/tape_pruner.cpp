@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 namespace zeroset {
 
@@ -30,8 +31,9 @@ TapePruner::TapePruner(const Tape& full)
     ++choices_made_[0];
 }
 
-// The same for four lanes at once, without a branch a lane: each lane
-// makes the one-box choice (left first).
+// The same for four lanes at once, without a branch: each lane makes the
+// one-box choice (left first). Whether any lane chose is as good as random
+// from one clause to the next, so the selects and counts run every time.
 [[gnu::always_inline]] inline void TapePruner::record_winners(Op op, const IntervalLanes& a, const IntervalLanes& b,
                                                               const ResolvedOperands& v, LaneIds& own) {
     using IdMask = std::int32_t __attribute__((vector_size(sizeof(std::int32_t) * lanes)));
@@ -39,11 +41,9 @@ TapePruner::TapePruner(const Tape& full)
     const IntervalLanes::Mask left64 = op == Op::Min ? a_below : b_below;
     const IntervalLanes::Mask right64 = (op == Op::Min ? b_below : a_below) & ~left64;
     const IdMask left = __builtin_convertvector(left64, IdMask), right = __builtin_convertvector(right64, IdMask);
-    const IdMask chosen = left | right;
-    if ((chosen[0] | chosen[1] | chosen[2] | chosen[3]) == 0) return;
     own = left ? v.a : own;
     own = right ? v.b : own;
-    for (std::size_t k = 0; k < static_cast<std::size_t>(lanes); ++k) choices_made_[k] += chosen[k] != 0;
+    choices_made_ -= std::bit_cast<LaneIds>(left | right);  // a chosen lane's mask is −1: one more
 }
 
 // Flattened: the op dispatch and the interval arithmetic are inlined into
@@ -51,7 +51,7 @@ TapePruner::TapePruner(const Tape& full)
 template <class T>
 [[gnu::flatten]] T TapePruner::walk(const Tape& source, T* s) {
     source_ = &source;
-    choices_made_.fill(0);
+    choices_made_ = LaneIds{};
     LaneIds* held = slot_values_.data();  // the value in each slot, in each lane
     for (ValueId v = 0; v < 3; ++v) held[v] = LaneIds{} + v;
     for (const auto& [slot, value] : source.constants()) {

@@ -94,7 +94,7 @@ private:
     std::vector<ResolvedOperands> operands_;  // per clause of source_: the values its operands are in each lane
     std::vector<LaneIds> slot_values_;        // during a walk: the value each slot holds, in each lane
     LaneIds result_value_{};                  // source_'s result, in each lane
-    std::array<std::size_t, lanes> choices_made_{};
+    LaneIds choices_made_{};  // per lane: the mins and maxes with a winning side
     std::vector<Interval> slots_;
     std::vector<IntervalLanes> lane_slots_;         // made by the first lanes evaluate()
     std::vector<double> constant_value_;  // per slot of the source's constants: its value
