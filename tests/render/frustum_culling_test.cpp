@@ -72,6 +72,43 @@ TEST(FrustumCulling, ImagesAreTheSameWithAndWithoutIt) {
     EXPECT_LT(culled.stats.counters.point_evaluations, traced.stats.counters.point_evaluations);
 }
 
+// Tiles whose rays all pass beside the scene's bounds are filled with the
+// background without making their rays: the same pixels, layers and ray
+// count as tracing every ray, with three samples a pixel (whose average
+// of the background is not always the background's own bits).
+TEST(FrustumCulling, TilesBesideTheSceneAreTheBackgroundAsTraced) {
+    const Scene scene = parse_scene(R"(
+image  { width 80  height 48  spp 3 }
+camera { from (0, 0, -6)  at (0, 0, 0)  fov 40 }
+background (0.1, 0.3, 0.7)
+object "corner" { surface x^2 + y^2 + z^2 - 0.09  bounds box((-0.31, -0.31, -0.31), (0.31, 0.31, 0.31))
+                  translate (1.6, 0.8, 0) }
+)",
+                                    "corner.zs", ".");
+    RenderSettings on;
+    on.width = scene.image.width;
+    on.height = scene.image.height;
+    on.samples_per_pixel = scene.image.samples_per_pixel;
+    on.threads = 2;
+    on.layers = true;
+    RenderSettings off = on;
+    off.frustum_culling = false;
+    const RenderResult culled = render(scene, on), traced = render(scene, off);
+    EXPECT_GT(culled.stats.hits, 20u);  // the sphere is in the picture
+    EXPECT_EQ(culled.stats.hits, traced.stats.hits);
+    EXPECT_EQ(culled.stats.camera_rays, traced.stats.camera_rays);
+    EXPECT_EQ(culled.stats.camera_rays, 80u * 48u * 3u);
+    std::size_t differing = 0, background = 0;
+    for (std::size_t i = 0; i < culled.image.pixels.size(); ++i) {
+        if (!(culled.image.pixels[i] == traced.image.pixels[i]) || !(culled.image.normals[i] == traced.image.normals[i]) ||
+            culled.image.depth[i] != traced.image.depth[i])
+            ++differing;
+        if (std::isinf(culled.image.depth[i])) ++background;
+    }
+    EXPECT_EQ(differing, 0u);
+    EXPECT_GT(background, culled.image.pixels.size() / 2);  // most tiles were filled, not traced
+}
+
 // A blob's camera rays meet its components by their tile's list: the same
 // image as by its BVH, directly and through a turned instance, with two
 // rays a pixel — to rounding (the components come in another order, so a

@@ -89,6 +89,8 @@ private:
     void allow(Worker& worker, std::uint64_t total) const;
     void record_nan(const TraceScratch::NanRecord& nan);
     void record_non_finite(int px, int py);
+    /// A tile whose rays all pass beside the scene's bounds: the background, with no ray made.
+    void fill_with_background(const TileRect& tile, Image& into, int origin_x, int origin_y, TileWork& work);
 
     std::chrono::steady_clock::time_point created_ = std::chrono::steady_clock::now();
     const Scene& scene_;
