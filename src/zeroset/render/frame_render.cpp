@@ -203,7 +203,7 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
     const CameraFrustum* culled = cull_camera_tiles_ ? &frustum : nullptr;
     // Cone tracing looks beside a ray that misses, so it keeps every ray.
     if (!cone && scene_box_ && frustum.misses(*scene_box_)) {
-        fill_with_background(tile, into, origin_x, origin_y, work);
+        if (!stopped()) fill_with_background(tile, into, origin_x, origin_y, work);
         work.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return work;
     }
