@@ -55,7 +55,8 @@ TEST(Bernstein, TheCoefficientsAreThePolynomialsWithinTheirStatedRounding) {
             double t0 = end(random), t1 = end(random);
             if (t0 > t1) std::swap(t0, t1);
             double magnitude = 0.0;
-            const PolynomialScratch b = to_bernstein(p, n, t0, t1, magnitude);
+            PolynomialScratch b;
+            to_bernstein(p, n, t0, t1, b, magnitude);
             const double noise = bernstein_noise(n, magnitude);
             const std::vector<long double> exact = reference_bernstein(p, n, t0, t1);
             for (int k = 0; k <= n; ++k) {

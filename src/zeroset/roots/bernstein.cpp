@@ -104,13 +104,14 @@ template <int N>
 
 }  // namespace
 
-PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, double t1, double& magnitude) {
-    PolynomialScratch b{};
+// Into the caller's array, not a returned one: zeroing a whole scratch
+// array (33 doubles) for a quartic's five coefficients was most of the cost
+// of a call.
+void to_bernstein(std::span<const double> p, int n, double t0, double t1, std::span<double> out, double& magnitude) {
     if (n >= 1 && n < static_cast<int>(fixed_conversions.size()))
-        fixed_conversions[at(n)](p.data(), t0, t1, b.data(), magnitude);
+        fixed_conversions[at(n)](p.data(), t0, t1, out.data(), magnitude);
     else
-        convert<max_polynomial_degree + 1>(p.data(), n, t0, t1, b.data(), magnitude);
-    return b;
+        convert<max_polynomial_degree + 1>(p.data(), n, t0, t1, out.data(), magnitude);
 }
 
 // Not vectorised: GCC's vectorisers pack the triangle's neighbours

@@ -13,9 +13,10 @@
 namespace zeroset {
 
 /// The Bernstein coefficients on [t0, t1] of p (ascending powers, degree n
-/// ≤ 32); `magnitude` gets the largest of the same computed on |p| and |t0|,
+/// ≤ 32), into out[0..n] (out holds at least n + 1; the rest is left as it
+/// was); `magnitude` gets the largest of the same computed on |p| and |t0|,
 /// the scale of the conversion's rounding.
-PolynomialScratch to_bernstein(std::span<const double> p, int n, double t0, double t1, double& magnitude);
+void to_bernstein(std::span<const double> p, int n, double t0, double t1, std::span<double> out, double& magnitude);
 
 /// Splits the Bernstein coefficients b[0..n] of a piece at its middle into
 /// those of its halves (de Casteljau). `left` or `right` (not both) may be

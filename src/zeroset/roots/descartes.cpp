@@ -57,7 +57,9 @@ PolynomialRoots descartes_roots(std::span<const double> c, double t0, double t1,
     // by two, so the depth bounds the size.
     std::array<Piece, 64> stack;
     std::size_t top = 0;
-    stack[top++] = {t0, t1, to_bernstein(p, n, t0, t1, magnitude)};
+    stack[top].a = t0;
+    stack[top].b = t1;
+    to_bernstein(p, n, t0, t1, stack[top++].bernstein, magnitude);
     ++result.evaluations;
     // De Casteljau only averages, which adds little to the conversion's rounding.
     const double noise = bernstein_noise(n, magnitude);

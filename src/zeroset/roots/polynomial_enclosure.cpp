@@ -117,7 +117,8 @@ double root_radius(const PolynomialEnclosure& f, double within, double largest) 
 bool provably_positive(const PolynomialEnclosure& f, double t0, double t1) {
     const int n = static_cast<int>(f.value.size()) - 1;
     double magnitude = 0.0;
-    const PolynomialScratch b = to_bernstein(f.value, n, t0, t1, magnitude);
+    PolynomialScratch b;
+    to_bernstein(f.value, n, t0, t1, b, magnitude);
     const double noise = bernstein_noise(n, magnitude) + enclosure_bound(f, std::max(-t0, t1));
     return std::all_of(b.begin(), b.begin() + n + 1, [noise](double c) { return c > noise; });
 }

@@ -164,7 +164,8 @@ PossibleRoot first_possible_root_subdividing(const PolynomialEnclosure& f, doubl
         return r;
     }
     double magnitude = 0.0;
-    const PolynomialScratch bernstein = to_bernstein(f.value, n, t0, t1, magnitude);
+    PolynomialScratch bernstein;
+    to_bernstein(f.value, n, t0, t1, bernstein, magnitude);
     ++r.evaluations;
     if (n < 8) return subdivide<8>(f, t0, t1, bernstein, magnitude, tolerance, r);
     return subdivide<max_polynomial_degree + 1>(f, t0, t1, bernstein, magnitude, tolerance, r);

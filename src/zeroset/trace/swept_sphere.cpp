@@ -269,7 +269,8 @@ SweepSpans sweep_spans(const SweptSegment& segment, const Ray& in) {
     // coefficients on [0, 1] bound it, so all of them negative (beyond the
     // conversion's rounding) prove D < 0 there without solving anything.
     double magnitude = 0.0;
-    const PolynomialScratch bernstein = to_bernstein(d.coefficients(), d.degree(), 0.0, 1.0, magnitude);
+    PolynomialScratch bernstein;
+    to_bernstein(d.coefficients(), d.degree(), 0.0, 1.0, bernstein, magnitude);
     ++result.evaluations;
     const double noise = 4.0 * bernstein_noise(d.degree(), magnitude);
     if (std::all_of(bernstein.begin(), bernstein.begin() + d.degree() + 1, [&](double v) { return v < -noise; }))
