@@ -74,7 +74,11 @@ PossibleRoot subdivide(const PolynomialEnclosure& f, double t0, double t1, const
     // by two, so the depth bounds the size.
     std::array<Piece, scan_depth + 2> stack;
     std::size_t top = 0;
-    stack[top] = {t0, t1, 0, {}};
+    // Field by field: an aggregate with {} for the coefficients would zero
+    // them all first (a `rep stos`, slow to start, on every ray).
+    stack[top].a = t0;
+    stack[top].b = t1;
+    stack[top].depth = 0;
     std::copy_n(bernstein.begin(), n + 1, stack[top].c.begin());
     ++top;
     const double noise = bernstein_noise(n, magnitude);
