@@ -174,8 +174,10 @@ std::optional<std::string> FrameRender::failure() const {
 }
 
 // Every pixel gets what the traced loop would give it with no hit — its
-// samples' background averaged, summed in the same order — without its
-// rays being made (each ~12 ns; most of an empty frame's time).
+// samples' background averaged, summed in the same order — pixel by pixel
+// as that loop goes (it stops where the render stops, and counts the rays
+// it would have made), without making the rays (each ~12 ns; most of an
+// empty frame's time).
 void FrameRender::fill_with_background(const TileRect& tile, Image& into, int origin_x, int origin_y, TileWork& work) {
     const int spp = settings_.samples_per_pixel;
     Vec3d sum{};
@@ -183,10 +185,11 @@ void FrameRender::fill_with_background(const TileRect& tile, Image& into, int or
     const Vec3d color = sum / static_cast<double>(spp);
     const NearestSample none;
     for (int py = tile.y0; py < tile.y1; ++py)
-        for (int px = tile.x0; px < tile.x1; ++px)
+        for (int px = tile.x0; px < tile.x1; ++px) {
+            if (stopped()) break;
+            work.camera_rays += static_cast<std::uint64_t>(spp);
             if (!store_pixel(into, px - origin_x, py - origin_y, color, none.depth, none.normal)) record_non_finite(px, py);
-    work.camera_rays += static_cast<std::uint64_t>(tile.x1 - tile.x0) * static_cast<std::uint64_t>(tile.y1 - tile.y0) *
-                        static_cast<std::uint64_t>(spp);
+        }
 }
 
 TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into, int origin_x, int origin_y) {
@@ -203,7 +206,8 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
     const CameraFrustum* culled = cull_camera_tiles_ ? &frustum : nullptr;
     // Cone tracing looks beside a ray that misses, so it keeps every ray.
     if (!cone && scene_box_ && frustum.misses(*scene_box_)) {
-        if (!stopped()) fill_with_background(tile, into, origin_x, origin_y, work);
+        fill_with_background(tile, into, origin_x, origin_y, work);
+        report(worker, true);  // as every tile ends: the worker's allowance follows the frame's total
         work.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return work;
     }
