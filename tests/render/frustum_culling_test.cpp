@@ -46,13 +46,15 @@ object "cut" {
 )";
 }
 
-/// The scene at its own size and samples, on two threads: with frustum culling, then without.
-std::pair<RenderResult, RenderResult> render_with_and_without_culling(const Scene& scene) {
+/// The scene at its own size and samples, on two threads (with the depth
+/// and normal layers when asked): with frustum culling, then without.
+std::pair<RenderResult, RenderResult> render_with_and_without_culling(const Scene& scene, bool layers = false) {
     RenderSettings on;
     on.width = scene.image.width;
     on.height = scene.image.height;
     on.samples_per_pixel = scene.image.samples_per_pixel;
     on.threads = 2;
+    on.layers = layers;
     RenderSettings off = on;
     off.frustum_culling = false;
     return {render(scene, on), render(scene, off)};
@@ -86,15 +88,7 @@ object "corner" { surface x^2 + y^2 + z^2 - 0.09  bounds box((-0.31, -0.31, -0.3
                   translate (1.6, 0.8, 0) }
 )",
                                     "corner.zs", ".");
-    RenderSettings on;
-    on.width = scene.image.width;
-    on.height = scene.image.height;
-    on.samples_per_pixel = scene.image.samples_per_pixel;
-    on.threads = 2;
-    on.layers = true;
-    RenderSettings off = on;
-    off.frustum_culling = false;
-    const RenderResult culled = render(scene, on), traced = render(scene, off);
+    const auto [culled, traced] = render_with_and_without_culling(scene, true);
     EXPECT_GT(culled.stats.hits, 20u);  // the sphere is in the picture
     EXPECT_EQ(culled.stats.hits, traced.stats.hits);
     EXPECT_EQ(culled.stats.camera_rays, traced.stats.camera_rays);

@@ -26,15 +26,15 @@ struct NearestSample {
     }
 };
 
-/// Writes a pixel's colour, and its depth and normal where `into` has
-/// layers, at (ix, iy) of `into`. False when the colour is not finite.
-bool store_pixel(Image& into, int ix, int iy, const Vec3d& color, float depth, const Vec3f& normal) {
+/// Writes a pixel's colour, and what its samples saw nearest where `into`
+/// has layers, at (ix, iy) of `into`. False when the colour is not finite.
+bool store_pixel(Image& into, int ix, int iy, const Vec3d& color, const NearestSample& nearest) {
     const Vec3f pixel{static_cast<float>(color.x), static_cast<float>(color.y), static_cast<float>(color.z)};
     into.at(ix, iy) = pixel;
     if (into.has_layers()) {
         const std::size_t i = static_cast<std::size_t>(iy) * static_cast<std::size_t>(into.width) + static_cast<std::size_t>(ix);
-        into.depth[i] = depth;
-        into.normals[i] = normal;
+        into.depth[i] = nearest.depth;
+        into.normals[i] = nearest.normal;
     }
     return std::isfinite(pixel.x) && std::isfinite(pixel.y) && std::isfinite(pixel.z);
 }
@@ -188,7 +188,7 @@ void FrameRender::fill_with_background(const TileRect& tile, Image& into, int or
         for (int px = tile.x0; px < tile.x1; ++px) {
             if (stopped()) break;
             work.camera_rays += static_cast<std::uint64_t>(spp);
-            if (!store_pixel(into, px - origin_x, py - origin_y, color, none.depth, none.normal)) record_non_finite(px, py);
+            if (!store_pixel(into, px - origin_x, py - origin_y, color, none)) record_non_finite(px, py);
         }
 }
 
@@ -232,7 +232,7 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
                     seen = cone->pixel(tracer, ray, hit, seen, shading, scene_.image.reflection_depth, work.cone);
                 sum += seen;
             }
-            if (!store_pixel(into, px - origin_x, py - origin_y, sum / static_cast<double>(spp), nearest.depth, nearest.normal))
+            if (!store_pixel(into, px - origin_x, py - origin_y, sum / static_cast<double>(spp), nearest))
                 record_non_finite(px, py);
             report(worker, false);
         }
