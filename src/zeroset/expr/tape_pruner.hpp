@@ -98,8 +98,8 @@ private:
     std::vector<Interval> slots_;
     std::vector<IntervalLanes> lane_slots_;         // made by the first lanes evaluate()
     std::vector<double> constant_value_;  // per slot of the source's constants: its value
-    // Per clause and per constant of the source, stamped with epoch_ once live.
-    std::vector<std::uint32_t> clause_live_, constant_live_;
+    std::vector<std::uint64_t> clause_live_;      // a bit per clause of the source: live
+    std::vector<std::uint32_t> constant_live_;    // per constant slot of the source: epoch_ once live
     std::vector<std::uint32_t> working_slot_;   // per live clause: its slot in the pruned tape
     std::vector<std::uint32_t> constant_slot_;  // per live constant: its slot in the pruned tape
     std::vector<std::uint32_t> free_slots_;     // a stack of the free working slots
