@@ -195,9 +195,9 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
             if (f <= 0.0) return crossing_before(t, eps, a);  // on or inside the surface
             clear_to = t;
             // Closing in by steps is slow: each takes a share of what is left
-            // (the share the true slope is of the bound), and the surface is
-            // ε away only after ~13 of them on the bear at 512², bound twice
-            // too loose. The last two steps' secant predicts where H reaches 0
+            // (the share the true slope is of the bound), so reaching ε took
+            // about ten steps a hit on the bear at 512². The last two steps'
+            // secant predicts where H reaches 0
             // (Newton's eq. 22 with a difference slope); the secant's slope is
             // never steeper than the bound, so the prediction is always past
             // the next step. A sign change a little past it, on a stretch
