@@ -156,7 +156,9 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
         // leaving a lit surface, say — and then one step clears the segment.
         segment_a = a, segment_b = b;
         segment_slope = h.slope(a, b, counters);
-        const double descent = std::max(0.0, -(side > 0.0 ? segment_slope : -segment_slope).lo);
+        const Interval side_segment_slope = side > 0.0 ? segment_slope : -segment_slope;
+        const double descent = std::max(0.0, -side_segment_slope.lo);
+        const bool falls_throughout = side_segment_slope.hi < 0.0;  // side·H strictly decreasing on [a, b]
         const bool splittable = b - a > 2.0 * eps && segments.can_split(segment);
         if (!std::isfinite(descent)) {
             if (splittable) {
@@ -197,14 +199,13 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
             // Closing in by steps is slow: each takes a share of what is left
             // (the share the true slope is of the bound), so reaching ε took
             // about ten steps a hit on the bear at 512². The last two steps'
-            // secant predicts where H reaches 0
-            // (Newton's eq. 22 with a difference slope); the secant's slope is
-            // never steeper than the bound, so the prediction is always past
-            // the next step. A sign change a little past it, on a stretch
-            // where side·H is proven strictly decreasing — by the segment's
-            // own slope when that shows it, else by one over the stretch —
-            // brackets its one root there, the first, as all before t is
-            // cleared.
+            // secant predicts where H reaches 0 (Newton's eq. 22 with a
+            // difference slope); the secant's slope is never steeper than the
+            // bound, so the prediction is always past the next step. A sign
+            // change a little past it, on a stretch where side·H is proven
+            // strictly decreasing — by the segment's own slope when that shows
+            // it, else by one over the stretch — brackets its one root there,
+            // the first, as all before t is cleared.
             if (probes_left > 0 && f < f_before) {
                 const double secant = (f - f_before) / (t - t_before);
                 const double probe = t + 1.25 * (-f / secant);
@@ -212,8 +213,7 @@ Crossing SphereTracer::march(RayFunction& h, Span span, double side_at_start, Tr
                     --probes_left;
                     const double f_probe = value_at(probe);
                     if (std::isnan(f_probe)) return {};
-                    const bool falls = (side > 0.0 ? segment_slope : -segment_slope).hi < 0.0;
-                    if (f_probe <= 0.0 && (falls || side_slope(t, probe).hi < 0.0)) return {t, false, probe};
+                    if (f_probe <= 0.0 && (falls_throughout || side_slope(t, probe).hi < 0.0)) return {t, false, probe};
                 }
             }
             t_before = t, f_before = f;
