@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "root_test_support.hpp"
@@ -38,6 +39,31 @@ TEST(RefineRoot, EndsAlreadyEvaluatedAreNotEvaluatedAgain) {
         EXPECT_EQ(r.t, from_scratch.t);  // the same steps, two evaluations fewer
         EXPECT_EQ(h.calls, fresh.calls - 2);
     }
+}
+
+TEST(RefineRoot, EndsKnownByTheirValueAloneStartWithRegulaFalsi) {
+    // Ends given with H alone (H′ NaN, as a march that just found the
+    // bracket knows them): the first step is the secant's, then Newton; on
+    // every simple root the same root as from scratch, for no more
+    // evaluations of H and H′ than from scratch, whose ends cost two.
+    for (const test::KnownRoot& k : test::known_roots()) {
+        if (!k.simple) continue;
+        SCOPED_TRACE(k.name);
+        constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
+        auto h = test::counted([&k](double t) { return k.both(t); });
+        const BracketResult r = refine_root(h, BracketPoint{k.a, {k.both(k.a).value, unknown}},
+                                            BracketPoint{k.b, {k.both(k.b).value, unknown}});
+        EXPECT_EQ(r.status, BracketStatus::Converged);
+        EXPECT_LE(test::ulps_between(r.t, k.root), 1);
+        auto fresh = test::counted([&k](double t) { return k.both(t); });
+        EXPECT_LE(h.calls, refine_root(fresh, k.a, k.b).evaluations);
+    }
+    // t − 0.3 on [0, 1]: the secant lands on the root at once.
+    auto line = test::counted([](double t) { return ValueAndDerivative{t - 0.3, 1.0}; });
+    const BracketResult r = refine_root(line, BracketPoint{0.0, {-0.3, std::numeric_limits<double>::quiet_NaN()}},
+                                        BracketPoint{1.0, {0.7, std::numeric_limits<double>::quiet_NaN()}});
+    EXPECT_LE(test::ulps_between(r.t, 0.3), 1);
+    EXPECT_LE(line.calls, 3);
 }
 
 TEST(RefineRoot, ClosesTheBracketFromBothSides) {

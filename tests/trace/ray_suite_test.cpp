@@ -305,14 +305,15 @@ TEST_P(RaySuiteScaled, SphereMethodNeverMissesAndIsExact) { expect_strict(Method
 // A ray known to start outside (a later octree cell's) skips the start's
 // evaluation: on every suite ray that starts outside, each guaranteed
 // method's first_hit_from_outside gives first_hit's answer, bit for bit,
-// for one point evaluation less — or, for sphere tracing, whose march
-// evaluates the start itself unless the segment's enclosure settles it,
-// never more.
+// with the same interval evaluations, and over the suite fewer point
+// evaluations. Ray by ray the point evaluations may differ either way:
+// RayFunction remembers its last two values, and the start's among them
+// changes which later values are found there instead of taken again.
 TEST(RaySuite, AStartKnownOutsideGivesTheSameHitForLessWork) {
     std::map<std::string, std::unique_ptr<Tape>> tapes;
     for (const Method method : {Method::Interval, Method::Lg, Method::Sphere}) {
         int outside = 0;
-        std::uint64_t saved = 0;
+        std::int64_t saved = 0;  // point evaluations, over the suite
         for (const SuiteRay& r : suite()) {
             auto& tape = tapes[r.surface];
             if (!tape) tape = std::make_unique<Tape>(ray_suite_surface(r.surface).f);
@@ -328,18 +329,14 @@ TEST(RaySuite, AStartKnownOutsideGivesTheSameHitForLessWork) {
             const HitResult b = finder->first_hit_from_outside(h, r.span, from_outside);
             ASSERT_EQ(a.status, b.status) << method_name(method) << ": " << describe(r);
             ASSERT_EQ(a.t, b.t) << method_name(method) << ": " << describe(r);
-            ASSERT_LE(from_outside.point_evaluations + (method == Method::Sphere ? 0 : 1), full.point_evaluations)
-                << method_name(method) << ": " << describe(r);
             ASSERT_EQ(from_outside.interval_evaluations, full.interval_evaluations) << method_name(method);
-            saved += full.point_evaluations - from_outside.point_evaluations;
+            saved += static_cast<std::int64_t>(full.point_evaluations) -
+                     static_cast<std::int64_t>(from_outside.point_evaluations);
         }
         EXPECT_GT(outside, 5000) << method_name(method);
-        EXPECT_GT(saved, 0U) << method_name(method);
-        if (method != Method::Sphere) {
-            EXPECT_EQ(saved, static_cast<std::uint64_t>(outside)) << method_name(method);
-        }
-        std::printf("%s: %d rays starting outside, %llu point evaluations saved\n", std::string(method_name(method)).c_str(),
-                    outside, static_cast<unsigned long long>(saved));
+        EXPECT_GT(saved, 0) << method_name(method);
+        std::printf("%s: %d rays starting outside, %lld point evaluations saved\n", std::string(method_name(method)).c_str(),
+                    outside, static_cast<long long>(saved));
     }
 }
 

@@ -4,10 +4,11 @@
 // the LG method of §5.1 ends the same way). This is that combination, as a
 // safeguarded Newton iteration on a sign-change bracket:
 //
-//   - Newton (eq. 22) from the end of the bracket with the smaller |H|; its
-//     point is taken when it lies strictly inside the bracket, otherwise the
-//     step bisects. The bracket always shrinks, by the side of the surface
-//     (H ≤ 0 inside) that H takes at the new point.
+//   - Newton (eq. 22) from the end of the bracket with the smaller |H| — or
+//     regula falsi where H′ is not known there (an end given by its value
+//     alone); its point is taken when it lies strictly inside the bracket,
+//     otherwise the step bisects. The bracket always shrinks, by the side
+//     of the surface (H ≤ 0 inside) that H takes at the new point.
 //   - Newton converges from one side, so the far end would never move. A
 //     Newton step shorter than half the x tolerance is lengthened to that,
 //     and one too small to change t moves t to the next double: the point
@@ -43,6 +44,15 @@ inline double newton_step(const BracketPoint& p) {
     return -p.h.value / derivative;
 }
 
+/// The regula falsi step from p over the bracket [lo, hi] — for an end
+/// whose H′ is not known (NaN) — or NaN when the ends' secant is flat or not
+/// finite.
+inline double secant_step(const BracketPoint& p, const BracketPoint& lo, const BracketPoint& hi) {
+    const double slope = (hi.h.value - lo.h.value) / (hi.t - lo.t);
+    if (slope == 0.0 || !std::isfinite(slope)) return std::numeric_limits<double>::quiet_NaN();
+    return -p.h.value / slope;
+}
+
 /// Where refine_root evaluates next from `from`, given the Newton step there
 /// and the Newton step before it.
 inline double next_point(double from, double step, double previous_step, double min_step) {
@@ -67,7 +77,8 @@ BracketResult refine(F& h, BracketSearch& search, const BracketOptions& options)
         double step = std::numeric_limits<double>::quiet_NaN();  // stays NaN when this step bisects
         if (!search.must_bisect()) {
             const BracketPoint& from = search.best();
-            step = detail::newton_step(from);
+            step = std::isnan(from.h.derivative) ? detail::secant_step(from, search.lo(), search.hi())
+                                                 : detail::newton_step(from);
             const double next = detail::next_point(from.t, step, previous_step, 0.5 * options.x_tolerance);
             if (search.strictly_inside(next)) {
                 t = next;

@@ -18,7 +18,7 @@ RayFunction::RayFunction(const Tape& tape)
 void RayFunction::set_ray(const Ray& ray) {
     ray_ = ray;
     focus_ = std::numeric_limits<double>::quiet_NaN();
-    last_value_t_ = std::numeric_limits<double>::quiet_NaN();
+    known_ = {};
     dir_length_known_ = false;
     reset_base_tape();
 }
@@ -40,11 +40,11 @@ double RayFunction::value(double t, TraceCounters& counters) {
     // the last one ended, or where a march starts after the method looked —
     // H is the same: every tape pruned from the full one computes the same
     // value there (pruning only drops the losing sides of a min or max).
-    if (t == last_value_t_) return last_value_;
+    if (const std::optional<double> known = known_value(t)) return *known;
     ++counters.point_evaluations;
     const Vec3d p = ray_.at(t);
     const double h = checked(point_.on(bound_, tape_version_)(p.x, p.y, p.z), t, counters);
-    if (h == h) last_value_t_ = t, last_value_ = h;  // a NaN is evaluated (and recorded) again
+    if (h == h) known_ = {KnownValue{t, h}, known_[0]};  // a NaN is evaluated (and recorded) again
     return h;
 }
 

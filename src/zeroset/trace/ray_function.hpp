@@ -13,6 +13,7 @@
 // Every evaluation is counted, so methods can be compared on the same ray.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -156,8 +157,19 @@ private:
     std::vector<Tape> pruned_;          // pruned_[d]: the tape pruned at depth d, if any
     std::vector<const Tape*> tape_at_;  // the tape in use at depth d: pruned_[d] or its parent's
     std::size_t valid_depths_ = 0;      // tape_at_[d] belongs to this ray's current segments for d < this
-    double last_value_t_ = std::numeric_limits<double>::quiet_NaN();  // where value() last gave a number …
-    double last_value_ = 0.0;                                            // … and the number
+    /// Where value() last gave a number, and the number: the latest first.
+    /// Two, so that a refinement of the bracket a march has just found
+    /// (refine_bracket.hpp) takes H at neither end again.
+    struct KnownValue {
+        double t = std::numeric_limits<double>::quiet_NaN();
+        double h = 0.0;
+    };
+    std::array<KnownValue, 2> known_{};
+    [[nodiscard]] std::optional<double> known_value(double t) const {
+        for (const KnownValue& k : known_)
+            if (k.t == t) return k.h;
+        return std::nullopt;
+    }
     const Tape* bound_;                 // the tape evaluations walk
     std::uint64_t tape_version_ = 0;    // counts rewrites of pruned tapes in place
     const Tape* base_;                  // what depth 0 prunes from: the full tape or a cell's

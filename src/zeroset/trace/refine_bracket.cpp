@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <utility>
 
 #include "zeroset/roots/refine.hpp"
 
@@ -13,7 +15,16 @@ std::optional<double> refine_sign_change(RayFunction& h, double a, double b, Tra
         const Jet<double> j = h.jet(t, counters);
         return ValueAndDerivative{j.v, j.d1};
     };
-    const BracketResult r = refine_root(h_and_slope, a, b);
+    // The ends start with H alone (H′ NaN), so the first step is regula
+    // falsi's (roots/refine.hpp) and jets are spent inside only. H there is
+    // usually known already — a march has just taken it at both ends of the
+    // bracket it found — and the refinement is the same whether it is.
+    if (b < a) std::swap(a, b);
+    if (!std::isfinite(a) || !std::isfinite(b)) return std::nullopt;
+    const auto end = [&](double t) {
+        return BracketPoint{t, {h.value(t, counters), std::numeric_limits<double>::quiet_NaN()}};
+    };
+    const BracketResult r = refine_root(h_and_slope, end(a), end(b));
     if (r.status != BracketStatus::Converged) return std::nullopt;
     return r.t;
 }
