@@ -1,7 +1,8 @@
 // rounding::down and rounding::up, the outward step of every interval
 // bound: exactly std::nextafter towards −∞ and +∞ on every double — the
 // edges (±0, subnormals, the largest finite, ±∞) and random bit patterns
-// over the whole range — with NaN kept.
+// over the whole range — with NaN kept; and their exact-zero versions,
+// the same except that 0 stays +0.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -18,6 +19,10 @@ namespace {
 constexpr double inf = std::numeric_limits<double>::infinity();
 
 void expect_next_double(double x) {
+    // The exact-zero versions keep 0 and step the rest alike.
+    const double exact_down = x == 0.0 ? 0.0 : rounding::down(x), exact_up = x == 0.0 ? 0.0 : rounding::up(x);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(rounding::exact_zero_down(x)), std::bit_cast<std::uint64_t>(exact_down)) << x;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(rounding::exact_zero_up(x)), std::bit_cast<std::uint64_t>(exact_up)) << x;
     if (x != x) {
         EXPECT_TRUE(std::isnan(rounding::down(x)));
         EXPECT_TRUE(std::isnan(rounding::up(x)));
