@@ -46,6 +46,8 @@ TEST(IntervalMpfi, ExactZerosStayZero) {
     EXPECT_TRUE(is_zero(Interval(0.0) + Interval(0.0)));
     EXPECT_TRUE(is_zero(Interval(0.3) - Interval(0.3)));
     EXPECT_TRUE(is_zero(Interval(0.0) * Interval(-3.0, 5.0)));
+    EXPECT_TRUE(is_zero(Interval(-3.0, 5.0) * Interval(0.0)));
+    EXPECT_TRUE(is_zero(Interval(0.0) * Interval::entire()));  // 0 × ∞ = 0
     const Interval spread = Interval(-0.25, 0.5) - Interval(0.5);
     EXPECT_EQ(spread.hi, 0.0);
     EXPECT_LT(spread.lo, -0.75);

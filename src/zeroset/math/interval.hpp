@@ -128,6 +128,10 @@ inline double product(double a, double b) {
 namespace detail {
 /// The product where a bound is 0, below the smallest normal, or 0 × ∞.
 inline Interval careful_product(Interval a, Interval b) {
+    // A point 0 — the derivative of a constant, in the dual numbers, so the
+    // commonest case here — times anything: the bounds the products below
+    // give it (the upper one −0, from product_up).
+    if ((a.lo == 0.0 && a.hi == 0.0) || (b.lo == 0.0 && b.hi == 0.0)) return {0.0, -0.0};
     const double p0 = product(a.lo, b.lo), p1 = product(a.lo, b.hi);
     const double p2 = product(a.hi, b.lo), p3 = product(a.hi, b.hi);
     return {rounding::product_down(std::min({p0, p1, p2, p3})), rounding::product_up(std::max({p0, p1, p2, p3}))};
