@@ -31,7 +31,7 @@ namespace rounding {
 /// are all 0 or have every exponent bit set. One unsigned comparison finds
 /// all three, so the usual case of a step takes a single, well predicted
 /// branch (four branches, one on the sign, cost 7–8 % of bear.vm's render).
-inline bool special(std::uint64_t bits) { return (bits << 1) - 1 >= 0xFFDF'FFFF'FFFF'FFFFu; }
+inline bool zero_infinite_or_nan(std::uint64_t bits) { return (bits << 1) - 1 >= 0xFFDF'FFFF'FFFF'FFFFu; }
 /// The next double towards −∞ from a finite nonzero one: −1 in its bits
 /// above 0, +1 below.
 inline double step_down(std::uint64_t bits) { return std::bit_cast<double>(bits - 1 + ((bits >> 63) << 1)); }
@@ -41,7 +41,7 @@ inline double step_down(std::uint64_t bits) { return std::bit_cast<double>(bits 
 /// except +∞, which becomes the largest finite double — still a lower bound.
 inline double down(double x) {
     const auto bits = std::bit_cast<std::uint64_t>(x);
-    if (special(bits)) [[unlikely]] {
+    if (zero_infinite_or_nan(bits)) [[unlikely]] {
         if (x == 0.0) return -std::numeric_limits<double>::denorm_min();
         if (x == std::numeric_limits<double>::infinity()) return std::numeric_limits<double>::max();
         return x;  // NaN, −∞
@@ -59,12 +59,12 @@ inline double up2(double x) { return up(up(x)); }
 /// microcode assist per operation), and 0 + 0 would otherwise seed them.
 inline double exact_zero_down(double x) {
     const auto bits = std::bit_cast<std::uint64_t>(x);
-    if (special(bits)) [[unlikely]] return x == 0.0 ? 0.0 : down(x);
+    if (zero_infinite_or_nan(bits)) [[unlikely]] return x == 0.0 ? 0.0 : down(x);
     return step_down(bits);
 }
 inline double exact_zero_up(double x) {
     const auto bits = std::bit_cast<std::uint64_t>(x);
-    if (special(bits)) [[unlikely]] return x == 0.0 ? 0.0 : up(x);
+    if (zero_infinite_or_nan(bits)) [[unlikely]] return x == 0.0 ? 0.0 : up(x);
     return -step_down(bits ^ (std::uint64_t{1} << 63));  // −down(−x)
 }
 /// The bounds of a product (detail::product): an exact 0 stays 0, and a
