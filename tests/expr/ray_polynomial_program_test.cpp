@@ -4,8 +4,11 @@
 // difference, and the same refusals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "zeroset/expr/ray_polynomial.hpp"
 #include "zeroset/expr/ray_polynomial_program.hpp"
@@ -82,6 +85,64 @@ TEST(RayPolynomialProgram, CentringGivesTheSamePolynomialShifted) {
             const double allowed = rounding_bound(centred, s) + horner_error_bound(centred.value(), s) +
                                    rounding_bound(direct, t) + horner_error_bound(direct.value(), t);
             EXPECT_LE(std::abs(horner(centred.value(), s).value - horner(direct.value(), t).value), allowed) << s;
+        }
+    }
+}
+
+/// A polynomial in t with long double coefficients (64-bit mantissa):
+/// exact enough to check double radii against.
+using LongPolynomial = std::vector<long double>;
+
+LongPolynomial operator*(const LongPolynomial& a, const LongPolynomial& b) {
+    LongPolynomial c(a.size() + b.size() - 1, 0.0L);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        for (std::size_t j = 0; j < b.size(); ++j) c[i + j] += a[i] * b[j];
+    return c;
+}
+
+LongPolynomial operator+(LongPolynomial a, const LongPolynomial& b) {
+    a.resize(std::max(a.size(), b.size()), 0.0L);
+    for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
+    return a;
+}
+
+LongPolynomial times(long double k, LongPolynomial a) {
+    for (long double& c : a) c *= k;
+    return a;
+}
+
+// A direction made from others (a camera tile's F + u·R + v·U) is off by a
+// few roundings of their magnitude: compiled with room for that and given
+// the magnitude, the radii cover the coefficients along the exact direction
+// (the torus expanded in long double about the same centre).
+TEST(RayPolynomialProgram, RadiiCoverADirectionKnownWithinItsMagnitude) {
+    const Expr torus = square(square(X) + square(Y) + square(Z) + 0.75) - 4.0 * (square(X) + square(Y));
+    auto c = RayPolynomialProgram::compile(Tape(torus), 16);
+    ASSERT_TRUE(c.program);
+    RayPolynomialProgram program = std::move(*c.program);
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> w(-1.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const Vec3d o{3.0 * w(rng), 3.0 * w(rng), -4.0 + w(rng)};
+        const Vec3d f{0.1 * w(rng), 0.1 * w(rng), 1.0}, r{1.0, 0.3 * w(rng), 0.1 * w(rng)}, up{0.2 * w(rng), 1.0, 0.1 * w(rng)};
+        const double u = 0.7 * w(rng), v = 0.7 * w(rng), t_c = 4.0 + w(rng);
+        const Vec3d d = f + r * u + up * v;  // rounded
+        Vec3d magnitude;
+        for (int a = 0; a < 3; ++a)
+            magnitude[a] = (std::abs(f[a]) + std::abs(u) * std::abs(r[a]) + std::abs(v) * std::abs(up[a])) * (1.0 + 1e-15);
+        program.evaluate({o, d}, t_c, magnitude);
+        // The exact line about t_c: x = (o + t_c·d) + s·d, d = f + u·r + v·up.
+        std::array<LongPolynomial, 3> x;
+        for (int a = 0; a < 3; ++a) {
+            const long double exact = static_cast<long double>(f[a]) + static_cast<long double>(u) * r[a] +
+                                      static_cast<long double>(v) * up[a];
+            x[static_cast<std::size_t>(a)] = {static_cast<long double>(o[a]) + static_cast<long double>(t_c) * exact, exact};
+        }
+        const LongPolynomial sum = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + LongPolynomial{0.75L};
+        const LongPolynomial exact = sum * sum + times(-4.0L, x[0] * x[0] + x[1] * x[1]);
+        for (int i = 0; i <= program.degree(); ++i) {
+            const long double difference = std::abs(program.value()[static_cast<std::size_t>(i)] - exact[static_cast<std::size_t>(i)]);
+            EXPECT_LE(difference, static_cast<long double>(program.radius(i))) << trial << " " << i;
         }
     }
 }

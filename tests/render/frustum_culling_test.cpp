@@ -1,7 +1,8 @@
 // Frustum culling (accel/frustum_cull.hpp) only moves where a camera ray
-// starts looking: every image is the same with it as without it — for
-// partitioned objects seen directly and through instances, cut by their
-// bounds, and with several rays a pixel.
+// starts looking, and a polynomial leaf's tile proofs only skip rays that
+// miss: every image is the same with them as without — for partitioned
+// objects seen directly and through instances, cut by their bounds, and
+// with several rays a pixel.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -138,6 +139,37 @@ instance spiral { rotate (20, 40, 0)  translate (1.0, 0.2, 0.5) }
         largest = std::max({largest, std::abs(d.x), std::abs(d.y), std::abs(d.z)});
     }
     EXPECT_LE(largest, 1e-4f);
+}
+
+// Polynomial surfaces answer the camera rays of tiles proven empty at once
+// (accel/polynomial_tile_proof.hpp): the same image as tracing every ray,
+// for a sheet seen through a gate and a turned torus in an instance.
+TEST(FrustumCulling, APolynomialSurfacesImageIsTheSameWithTileProofs) {
+    const Scene scene = parse_scene(R"(
+image  { width 96  height 64 }
+camera { from (0, 1.5, -9)  at (0, 0, 0)  fov 45 }
+light  { from (-4, 6, -5) }
+object "sheet" {
+  surface (x^2 + y^2 - z^2 + 0.6)^2 - 3.2 * (x^2 + y^2) + 0.1
+  bounds box((-6, -6, -6), (6, 6, 6))  open on  gate sphere((0, 0, 0), 3)  method polynomial
+  rotate (70, 20, 0)  translate (-1.2, 0, 0)
+}
+object "torus" {
+  surface (x^2 + y^2 + z^2 + 0.3)^2 - 1.6 * (x^2 + y^2)
+  bounds box((-1.5, -1.5, -0.6), (1.5, 1.5, 0.6))  method polynomial
+  rotate (60, 0, 30)  translate (2.2, 0.3, 0)
+}
+)",
+                                    "quartics.zs", ".");
+    const auto [proven, traced] = render_with_and_without_culling(scene);
+    EXPECT_GT(proven.stats.counters.proven_tile_rays, proven.stats.camera_rays / 10);  // the proofs served
+    EXPECT_EQ(traced.stats.counters.proven_tile_rays, 0u);
+    EXPECT_GT(proven.stats.hits, 500u);
+    EXPECT_EQ(proven.stats.hits, traced.stats.hits);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < proven.image.pixels.size(); ++i)
+        if (!(proven.image.pixels[i] == traced.image.pixels[i])) ++differing;
+    EXPECT_EQ(differing, 0u);
 }
 
 }  // namespace

@@ -3,10 +3,16 @@
 #include "zeroset/accel/camera_frustum.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
 namespace zeroset {
+
+std::uint64_t CameraFrustum::new_serial() {
+    static std::atomic<std::uint64_t> last{0};
+    return last.fetch_add(1, std::memory_order_relaxed) + 1;
+}
 
 std::optional<CameraFrustum::DualBasis> CameraFrustum::dual_basis() const {
     const double det = dot(forward, cross(right, up));
@@ -24,11 +30,16 @@ double CameraFrustum::Rectangle::margin() const {
     return 1e-9 * (1.0 + std::max({std::abs(u_lo), std::abs(u_hi), std::abs(v_lo), std::abs(v_hi)}));
 }
 
-CameraFrustum::Planes CameraFrustum::planes(const DualBasis& basis) const {
+CameraFrustum::Rectangle CameraFrustum::widened_rectangle() const {
     const Rectangle tile = rectangle();
     const double m = tile.margin();  // holds() lets a ray stray by half of it
+    return {tile.u_lo - m, tile.u_hi + m, tile.v_lo - m, tile.v_hi + m};
+}
+
+CameraFrustum::Planes CameraFrustum::planes(const DualBasis& basis) const {
+    const Rectangle w = widened_rectangle();
     const Vec3d &s = basis.to_s, &su = basis.to_su, &sv = basis.to_sv;
-    return {{su - s * (tile.u_lo - m), s * (tile.u_hi + m) - su, sv - s * (tile.v_lo - m), s * (tile.v_hi + m) - sv, s}};
+    return {{su - s * w.u_lo, s * w.u_hi - su, sv - s * w.v_lo, s * w.v_hi - sv, s}};
 }
 
 bool CameraFrustum::misses(const Box3& box) const {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 
 #include "zeroset/math/box3.hpp"
@@ -24,17 +25,26 @@ struct CameraFrustum {
     // between v0 + j·dv and v0 + (j + 1)·dv (either step may be negative).
     double u0 = 0.0, du = 0.0, v0 = 0.0, dv = 0.0;
     int columns = 0, rows = 0;
+    /// Names the frustum: each one made (new_serial) has its own, a copy
+    /// keeps it, so equal serials mean equal frusta; 0: unnamed.
+    std::uint64_t serial = 0;
 
     bool operator==(const CameraFrustum&) const = default;
+    /// The same frustum: by serial when named (one comparison), else field by field.
+    [[nodiscard]] bool same_as(const CameraFrustum& o) const { return serial != 0 ? serial == o.serial : *this == o; }
+    /// A serial no frustum has had yet (thread-safe).
+    static std::uint64_t new_serial();
 
     [[nodiscard]] int pixels() const { return columns * rows; }
-    /// The same rays in the space that `to_child` maps this one into.
+    /// The same rays in the space that `to_child` maps this one into (a
+    /// new frustum, with a serial of its own).
     [[nodiscard]] CameraFrustum in_child_space(const Mat4& to_child) const {
         CameraFrustum c = *this;
         c.origin = to_child.transform_point(origin);
         c.forward = to_child.transform_vector(forward);
         c.right = to_child.transform_vector(right);
         c.up = to_child.transform_vector(up);
+        c.serial = new_serial();
         return c;
     }
     /// The point at depth s on the ray through (u, v).
@@ -73,13 +83,17 @@ struct CameraFrustum {
     /// that misses() culls. False when that is not certain.
     [[nodiscard]] bool holds(const Ray& ray, const DualBasis& basis) const;
 
-private:
     /// The tile's rectangle [u_lo, u_hi] × [v_lo, v_hi] and a margin far
     /// wider than the rounding of a ray's (u, v).
     struct Rectangle {
         double u_lo, u_hi, v_lo, v_hi;
         [[nodiscard]] double margin() const;
     };
+    /// The rectangle widened by the margin misses() allows: the (u, v) of
+    /// every ray holds() accepts lie well inside.
+    [[nodiscard]] Rectangle widened_rectangle() const;
+
+private:
     [[nodiscard]] Rectangle rectangle() const;
     [[nodiscard]] Vec3d depth_form() const {
         const Vec3d n = cross(right, up);

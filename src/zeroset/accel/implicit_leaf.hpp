@@ -18,6 +18,7 @@
 
 #include "zeroset/accel/frustum_cull.hpp"
 #include "zeroset/accel/octree.hpp"
+#include "zeroset/accel/polynomial_tile_proof.hpp"
 #include "zeroset/accel/primitive.hpp"
 #include "zeroset/expr/evaluator.hpp"
 #include "zeroset/trace/bounds.hpp"
@@ -86,6 +87,7 @@ struct LeafScratch {
     std::optional<Evaluator<double>> clip;  // the clip's, when the leaf has one
     std::vector<double> roots;
     std::unique_ptr<CulledTiles> culled;  // made for the first camera tile the leaf meets
+    std::unique_ptr<ProvenTiles> proven;  // the same, for a polynomial leaf
 };
 
 class ImplicitLeaf final : public LeafPrimitive {
@@ -118,6 +120,9 @@ public:
     [[nodiscard]] Partition partition() const { return partition_; }
     /// The octree of the bounds, when partitioned.
     [[nodiscard]] const Octree* octree() const { return octree_ ? &*octree_ : nullptr; }
+    /// Whether camera tiles are proven free of the surface before their rays
+    /// are traced (the polynomial method: accel/polynomial_tile_proof.hpp).
+    [[nodiscard]] bool proves_camera_tiles() const { return method_ == Method::Polynomial; }
     /// The step of the difference normals, a length in the leaf's space:
     /// 3e-9 × scale for forward and 1e-6 × scale for central differences
     /// unless the description gives one — where the normal study
@@ -127,6 +132,9 @@ public:
 
 private:
     LeafScratch& scratch_for(TraceScratch& scratch) const;
+    /// The thread's proof entry for the camera ray's tile; nullptr once the
+    /// proofs have stopped.
+    ProvenTiles::Entry* camera_tile(LeafScratch& leaf, TraceScratch& scratch) const;
     /// The part of [t_min, t_max] to search — the ray within the search
     /// region, nothing when it misses the gate — and where along it the
     /// surface most likely is (NaN: anywhere; RayFunction::set_focus).
@@ -135,6 +143,9 @@ private:
         double focus;
     };
     [[nodiscard]] std::optional<SearchedSpan> searched_span(const Ray& ray, double t_min, double t_max) const;
+    /// first_hit on the span found, without the camera tiles' proofs.
+    std::optional<Hit> traced_first_hit(LeafScratch& leaf, const Ray& ray, const SearchedSpan& found, double t_min,
+                                        TraceScratch& scratch) const;
     /// Counts the cell and makes its tape the ray function's base.
     void enter_cell(LeafScratch& leaf, const OctreeCell& cell, TraceScratch& scratch) const;
     /// Where a camera ray can start to look for the solid: the depth its

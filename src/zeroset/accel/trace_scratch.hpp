@@ -82,10 +82,24 @@ public:
         return occluders_[(reinterpret_cast<std::uintptr_t>(group) >> 6) % occluders_.size()];
     }
 
+    /// A camera tile carried into an instance's space (CameraFrustum::
+    /// in_child_space), kept for the tile's next rays: a small table
+    /// indexed by the instance's address, checked by the tile's serial.
+    struct ChildTile {
+        const void* instance = nullptr;
+        std::uint64_t parent = 0;  // the serial of the tile it was made from
+        CameraFrustum frustum;
+    };
+    ChildTile& child_tile(const void* instance) {
+        const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(instance);
+        return child_tiles_[((a >> 4) ^ (a >> 10)) % child_tiles_.size()];
+    }
+
 private:
     std::vector<std::unique_ptr<LeafScratch>> leaves_;
     std::unique_ptr<BlobScratch> blob_;
     std::array<Occluder, 64> occluders_{};
+    std::array<ChildTile, 32> child_tiles_{};
     std::vector<std::unique_ptr<SpanList>> span_pool_;
     std::size_t spans_in_use_ = 0;
 };

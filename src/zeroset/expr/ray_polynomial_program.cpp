@@ -19,8 +19,6 @@ constexpr double unit_roundoff = std::numeric_limits<double>::epsilon() / 2.0;
 constexpr int unknown_roundings = std::numeric_limits<int>::max() / 4;
 /// libm's functions on an exact constant: within 2 ulp, i.e. 4 roundings.
 constexpr int libm_roundings = 4;
-/// The centred line's origin (see the header).
-constexpr int centre_roundings = 2;
 
 int add_roundings(int a, int b) { return std::min(a + b, unknown_roundings); }
 
@@ -36,11 +34,12 @@ double gamma(int k) {
 /// structural degree and their rounding count.
 class RayPolynomialCompiler {
 public:
-    explicit RayPolynomialCompiler(const Tape& tape) : tape_(tape), slots_(tape.slot_count()) {}
+    RayPolynomialCompiler(const Tape& tape, int input_roundings)
+        : tape_(tape), slots_(tape.slot_count()), input_roundings_(input_roundings) {}
 
     RayPolynomialProgram::Compiled run() {
         for (const std::uint32_t s : {Tape::slot_x, Tape::slot_y, Tape::slot_z}) {
-            slots_[s] = allocate(1, centre_roundings);
+            slots_[s] = allocate(1, input_roundings_);
             p_.variable_offset_[s] = slots_[s].offset;
         }
         for (const auto& [slot, value] : tape_.constants()) {
@@ -174,6 +173,7 @@ private:
     std::vector<SlotState> slots_;
     RayPolynomialProgram p_;
     RayPolynomialProgram::Refusal refusal_ = RayPolynomialProgram::Refusal::NotPolynomial;
+    int input_roundings_;
 };
 
 namespace {
@@ -276,33 +276,54 @@ RayPolynomialProgram::Kernel RayPolynomialProgram::kernel_for(StepKind kind, int
 }
 
 RayPolynomialProgram::Compiled RayPolynomialProgram::compile(const Tape& tape) {
-    return RayPolynomialCompiler(tape).run();
+    return compile(tape, default_input_roundings);
 }
 
-void RayPolynomialProgram::evaluate(const Ray& ray, double t_c) {
-    const double origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-    const double direction[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
-    for (int k = 0; k < 3; ++k) {
-        // centre = o + t_c·d, with its rounding error found exactly and added back.
-        const double o = origin[k];
-        const double d = direction[k];
-        const double product = t_c * d;
-        const double product_error = std::fma(t_c, d, -product);
-        const double sum = o + product;
-        const double virtual_product = sum - o;
-        const double sum_error = (o - (sum - virtual_product)) + (product - virtual_product);
-        const double residual = sum_error + product_error;
-        const double centre = sum + residual;
-        const std::uint32_t at = variable_offset_[k];
-        pairs_[at] = Pair{centre, std::abs(centre) + std::abs(residual)};
-        pairs_[at + 1] = Pair{d, std::abs(d)};
-    }
+RayPolynomialProgram::Compiled RayPolynomialProgram::compile(const Tape& tape, int input_roundings) {
+    return RayPolynomialCompiler(tape, input_roundings).run();
+}
+
+[[gnu::always_inline]] inline void RayPolynomialProgram::run() {
     for (const Step& s : steps_) s.kernel(s, pairs_.data());
     for (int i = 0; i <= degree_; ++i) {
         const Pair& p = pairs_[result_offset_ + static_cast<std::size_t>(i)];
         value_[static_cast<std::size_t>(i)] = p[0];
         magnitude_[static_cast<std::size_t>(i)] = p[1];
     }
+}
+
+// Inlined into both evaluate()s: called per coordinate, it was a tenth of a quartic's run.
+[[gnu::always_inline]] inline void RayPolynomialProgram::load_variable(int k, double o, double d, double t_c,
+                                                                       double direction_magnitude,
+                                                                       double centre_uncertainty) {
+    // centre = o + t_c·d, with its rounding error found exactly and added back.
+    const double product = t_c * d;
+    const double product_error = std::fma(t_c, d, -product);
+    const double sum = o + product;
+    const double virtual_product = sum - o;
+    const double sum_error = (o - (sum - virtual_product)) + (product - virtual_product);
+    const double residual = sum_error + product_error;
+    const double centre = sum + residual;
+    const std::uint32_t at = variable_offset_[k];
+    pairs_[at] = Pair{centre, std::abs(centre) + std::abs(residual) + centre_uncertainty};
+    pairs_[at + 1] = Pair{d, direction_magnitude};
+}
+
+void RayPolynomialProgram::evaluate(const Ray& ray, double t_c) {
+    const double origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    const double direction[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
+    for (int k = 0; k < 3; ++k) load_variable(k, origin[k], direction[k], t_c, std::abs(direction[k]), 0.0);
+    run();
+}
+
+void RayPolynomialProgram::evaluate(const Ray& ray, double t_c, const Vec3d& direction_magnitude) {
+    const double origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    const double direction[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
+    const double magnitude[3] = {direction_magnitude.x, direction_magnitude.y, direction_magnitude.z};
+    // The direction's error moves the centre by |t_c| times as much.
+    for (int k = 0; k < 3; ++k)
+        load_variable(k, origin[k], direction[k], t_c, magnitude[k], std::abs(t_c) * magnitude[k]);
+    run();
 }
 
 }  // namespace zeroset

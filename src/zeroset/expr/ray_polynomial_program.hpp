@@ -60,6 +60,11 @@ public:
     /// the degree; anything else on a non-constant is not polynomial.
     struct Compiled;
     static Compiled compile(const Tape& tape);
+    /// The same with each coordinate's line o + t·d taken to be off by up
+    /// to `input_roundings` roundings of its magnitude (the centre's own
+    /// error counts 2, the default): for directions computed from others.
+    static Compiled compile(const Tape& tape, int input_roundings);
+    static constexpr int default_input_roundings = 2;
 
     /// F's structural degree — an upper bound on its degree along any ray.
     [[nodiscard]] int degree() const { return degree_; }
@@ -68,6 +73,12 @@ public:
     /// Computes the coefficients of G(s) = F(t_c + s) along the ray; valid
     /// until the next call. Allocates nothing.
     void evaluate(const Ray& ray, double t_c);
+    /// The same for a direction computed from others, within the program's
+    /// input roundings (compile) of `direction_magnitude` (≥ |ray.dir| in
+    /// each coordinate) of the exact one: the radii then bound the
+    /// coefficients along the exact direction, whose error moves the centre
+    /// by up to |t_c| times as much.
+    void evaluate(const Ray& ray, double t_c, const Vec3d& direction_magnitude);
 
     /// G's rounded coefficients ĉ₀ … ĉ_degree(), ascending.
     [[nodiscard]] std::span<const double> value() const { return result(value_); }
@@ -103,6 +114,11 @@ private:
     RayPolynomialProgram() = default;
     /// The kernel for a step of this kind and these degrees.
     static Kernel kernel_for(StepKind kind, int a_degree, int b_degree);
+    /// Coordinate k's line about t_c into its slot: the centre o + t_c·d
+    /// and the direction d, with their magnitudes.
+    void load_variable(int k, double o, double d, double t_c, double direction_magnitude, double centre_uncertainty);
+    /// The steps, once the variables' lines are loaded.
+    void run();
     [[nodiscard]] std::span<const double> result(const std::array<double, max_degree + 1>& buffer) const {
         return {buffer.data(), static_cast<std::size_t>(degree_) + 1};
     }

@@ -55,6 +55,7 @@ CameraFrustum CameraRays::frustum(int x0, int y0, int x1, int y1) const {
     f.dv = -2.0 * half_height_ / height_;
     f.columns = x1 - x0;
     f.rows = y1 - y0;
+    f.serial = CameraFrustum::new_serial();
     return f;
 }
 

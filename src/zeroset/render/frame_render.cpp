@@ -103,11 +103,13 @@ FrameRender::FrameRender(const Scene& scene, const RenderSettings& settings)
       budget_(settings.max_evaluations.value_or(default_evaluation_budget(settings))) {
     if (settings.cone_antialiasing) distance_.emplace(scene);
     // The tiles go with the camera rays to the objects that use them: the
-    // partitioned ones cull them, blobs list their components by them.
+    // partitioned ones cull them, polynomial ones prove them empty, blobs
+    // list their components by them.
     cull_camera_tiles_ = settings.frustum_culling &&
                          (prepared_.has_blobs() ||
-                          std::any_of(prepared_.leaves().begin(), prepared_.leaves().end(),
-                                      [](const ImplicitLeaf* leaf) { return leaf->octree() != nullptr; }));
+                          std::any_of(prepared_.leaves().begin(), prepared_.leaves().end(), [](const ImplicitLeaf* leaf) {
+                              return leaf->octree() != nullptr || leaf->proves_camera_tiles();
+                          }));
     if (const Box3 box = prepared_.root().bounds(); settings.frustum_culling && is_bounded(box)) scene_box_ = box;
     prepare_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
 }

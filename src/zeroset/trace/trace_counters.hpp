@@ -17,6 +17,7 @@ struct TraceCounters {
     std::uint64_t blob_kernels = 0;          // blob components a ray came within reach of (accel/blob.hpp)
     std::uint64_t blob_list_rays = 0;        // camera rays that met a blob's components by their tile's list
     std::uint64_t blob_cached_shadows = 0;   // shadow rays a blob's last blocker settled
+    std::uint64_t proven_tile_rays = 0;      // camera rays a polynomial leaf's tile proof answered (accel/polynomial_tile_proof.hpp)
     /// Not a count: once evaluations() passes it, the subdividing methods
     /// give up (Failed) at their next segment. The renderer sets its budget
     /// here, so that one query cannot run far past it.
@@ -37,6 +38,7 @@ struct TraceCounters {
         blob_kernels += o.blob_kernels;
         blob_list_rays += o.blob_list_rays;
         blob_cached_shadows += o.blob_cached_shadows;
+        proven_tile_rays += o.proven_tile_rays;
         return *this;
     }
 
@@ -53,6 +55,7 @@ struct TraceCounters {
         d.blob_kernels = blob_kernels - before.blob_kernels;
         d.blob_list_rays = blob_list_rays - before.blob_list_rays;
         d.blob_cached_shadows = blob_cached_shadows - before.blob_cached_shadows;
+        d.proven_tile_rays = proven_tile_rays - before.proven_tile_rays;
         return d;
     }
 };
