@@ -55,9 +55,10 @@ Options:
                       tapes of 64 clauses or more; see docs/methods.md)
   --frustum-culling C on (default) or off: cull each 16x16 tile's frustum
                       against the partitioned objects by interval analysis
-                      before their camera rays are traced, and list the
-                      components of blobs each tile may meet
-                      (docs/methods.md)
+                      before their camera rays are traced, prove tiles free
+                      of polynomial surfaces (their Bernstein form over the
+                      tile), and list the components of blobs each tile may
+                      meet (docs/methods.md)
   --max-evaluations N stop with an error once the render has spent N
                       evaluations of the surfaces (default: 16384 per camera
                       ray, at least 4194304; see docs/limits.md)
