@@ -137,7 +137,10 @@ TEST(ProvenTiles, ATileIsTriedAfterAMissAndAnswersItsRays) {
     EXPECT_FALSE(tiles.proven_miss(*e, ray_of(beside, 0.5, 0.5)));  // not tried yet
     tiles.traced(*e, box, false, 1, counters);  // a cheap miss: not worth a proof
     EXPECT_EQ(e->state, ProvenTiles::State::Untried);
-    tiles.traced(*e, box, false, 5, counters);  // a costly one: tried now
+    for (std::uint32_t k = 1; k < ProvenTiles::misses_before_proof; ++k) tiles.traced(*e, box, false, 5, counters);
+    EXPECT_EQ(e->state, ProvenTiles::State::Untried);
+    EXPECT_EQ(counters.point_evaluations, 0u);
+    tiles.traced(*e, box, false, 5, counters);  // enough costly ones: tried now
     EXPECT_EQ(e->state, ProvenTiles::State::Proven);
     EXPECT_TRUE(tiles.proven_miss(*tiles.entry(beside), ray_of(beside, 0.2, 0.9)));
     // A ray from elsewhere, or through another part of the image, is not the tile's.
@@ -148,7 +151,7 @@ TEST(ProvenTiles, ATileIsTriedAfterAMissAndAnswersItsRays) {
     const std::uint64_t before = counters.point_evaluations;
     ProvenTiles::Entry* s = tiles.entry(seeing);
     tiles.traced(*s, box, true, 5, counters);
-    tiles.traced(*s, box, false, 5, counters);
+    for (std::uint32_t m = 0; m < ProvenTiles::misses_before_proof; ++m) tiles.traced(*s, box, false, 5, counters);
     EXPECT_EQ(s->state, ProvenTiles::State::Unproven);
     EXPECT_EQ(counters.point_evaluations, before);
 }
@@ -163,7 +166,7 @@ TEST(ProvenTiles, TryingStopsWhenProofsSpareFewRays) {
         // Tiles beside the sphere, each asked once: their proofs spare nothing.
         ProvenTiles::Entry* e = tiles.entry(tile_at({0, 0, -5}, 0.3 + 0.02 * k, 0.1));
         if (!e) break;
-        tiles.traced(*e, box, false, 5, counters);
+        for (std::uint32_t m = 0; m < ProvenTiles::misses_before_proof; ++m) tiles.traced(*e, box, false, 5, counters);
         ++tried;
     }
     EXPECT_EQ(tried, 64);

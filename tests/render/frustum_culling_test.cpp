@@ -146,7 +146,7 @@ instance spiral { rotate (20, 40, 0)  translate (1.0, 0.2, 0.5) }
 // for a sheet seen through a gate and a turned torus in an instance.
 TEST(FrustumCulling, APolynomialSurfacesImageIsTheSameWithTileProofs) {
     const Scene scene = parse_scene(R"(
-image  { width 96  height 64 }
+image  { width 160  height 120 }
 camera { from (0, 1.5, -9)  at (0, 0, 0)  fov 45 }
 light  { from (-4, 6, -5) }
 object "sheet" {

@@ -174,18 +174,14 @@ std::optional<ImplicitLeaf::SearchedSpan> ImplicitLeaf::searched_span(const Ray&
     return SearchedSpan{*span, *focus};
 }
 
-inline ProvenTiles::Entry* ImplicitLeaf::camera_tile(LeafScratch& leaf, TraceScratch& scratch) const {
-    if (!leaf.proven) leaf.proven = std::make_unique<ProvenTiles>(tape_);
-    return leaf.proven->entry(*scratch.camera_frustum);
-}
-
 std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
     // A camera ray of a tile proven free of the surface misses at once.
+    const bool camera = scratch.camera_frustum && proves_camera_tiles();
     LeafScratch* leaf = nullptr;
     ProvenTiles::Entry* tile = nullptr;
-    if (scratch.camera_frustum && proves_camera_tiles()) {
+    if (camera) {
         leaf = &scratch_for(scratch);
-        tile = camera_tile(*leaf, scratch);
+        if (leaf->proven) tile = leaf->proven->entry(*scratch.camera_frustum);
         if (tile && tile->state == ProvenTiles::State::Proven && leaf->proven->proven_miss(*tile, ray)) {
             ++scratch.counters.proven_tile_rays;
             return std::nullopt;
@@ -194,13 +190,19 @@ std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double 
     const auto found = searched_span(ray, t_min, t_max);
     if (!found) return std::nullopt;
     if (!leaf) leaf = &scratch_for(scratch);
-    if (!tile || tile->state != ProvenTiles::State::Untried)
+    if (!camera || (tile && tile->state != ProvenTiles::State::Untried))
         return traced_first_hit(*leaf, ray, *found, t_min, scratch);
-    // The first costly miss in a tile not yet tried asks for the proof.
+    // Costly misses in a tile not yet tried ask for its proof; the first
+    // makes the leaf's proofs.
     const std::uint64_t before = scratch.counters.evaluations();
     std::optional<Hit> hit = traced_first_hit(*leaf, ray, *found, t_min, scratch);
     const std::uint64_t spent = scratch.counters.evaluations() - before;
-    leaf->proven->traced(*tile, region_.box(), hit.has_value(), spent, scratch.counters);
+    if (!leaf->proven) {
+        if (hit || spent < ProvenTiles::costly_miss) return hit;
+        leaf->proven = std::make_unique<ProvenTiles>(tape_);
+    }
+    if (!tile) tile = leaf->proven->entry(*scratch.camera_frustum);
+    if (tile) leaf->proven->traced(*tile, region_.box(), hit.has_value(), spent, scratch.counters);
     return hit;
 }
 

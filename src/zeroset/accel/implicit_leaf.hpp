@@ -87,7 +87,7 @@ struct LeafScratch {
     std::optional<Evaluator<double>> clip;  // the clip's, when the leaf has one
     std::vector<double> roots;
     std::unique_ptr<CulledTiles> culled;  // made for the first camera tile the leaf meets
-    std::unique_ptr<ProvenTiles> proven;  // the same, for a polynomial leaf
+    std::unique_ptr<ProvenTiles> proven;  // made at the first costly miss of a camera ray, for a polynomial leaf
 };
 
 class ImplicitLeaf final : public LeafPrimitive {
@@ -132,9 +132,6 @@ public:
 
 private:
     LeafScratch& scratch_for(TraceScratch& scratch) const;
-    /// The thread's proof entry for the camera ray's tile; nullptr once the
-    /// proofs have stopped.
-    ProvenTiles::Entry* camera_tile(LeafScratch& leaf, TraceScratch& scratch) const;
     /// The part of [t_min, t_max] to search — the ray within the search
     /// region, nothing when it misses the gate — and where along it the
     /// surface most likely is (NaN: anywhere; RayFunction::set_focus).

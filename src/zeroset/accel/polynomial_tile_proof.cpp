@@ -287,7 +287,7 @@ ProvenTiles::Entry* ProvenTiles::entry(const CameraFrustum& tile) {
                                              [](const Entry& a, const Entry& b) { return a.last_use < b.last_use; });
         last_ = static_cast<std::size_t>(oldest - entries_.begin());
     }
-    entries_[last_] = Entry{tile, tile.dual_basis(), State::Untried, ++uses_};
+    entries_[last_] = Entry{tile, tile.dual_basis(), State::Untried, 0, ++uses_};
     return &entries_[last_];
 }
 
@@ -305,9 +305,10 @@ void ProvenTiles::traced(Entry& e, const Box3& box, bool hit, std::uint64_t spen
         e.state = State::Unproven;
         return;
     }
-    if (spent < costly_miss) return;  // a later, costlier miss may ask
+    if (spent < costly_miss || ++e.costly_misses < misses_before_proof) return;  // a later miss may ask
+    if (!proof_) proof_ = std::make_unique<PolynomialTileProof>(tape_);
     ++tries_;
-    e.state = proof_.proves_outside(e.tile, box, counters) ? State::Proven : State::Unproven;
+    e.state = proof_->proves_outside(e.tile, box, counters) ? State::Proven : State::Unproven;
     if (tries_ >= 64 && spared_ < 32 * tries_) stopped_ = true;
 }
 

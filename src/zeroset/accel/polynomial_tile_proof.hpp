@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include "zeroset/accel/camera_frustum.hpp"
@@ -64,21 +65,23 @@ private:
 };
 
 /// A leaf's proofs for the camera tiles one thread traces. A tile is tried
-/// once, when one of its rays has missed at some cost (a tile whose first
-/// ray hits is never tried, nor one whose misses cost the method next to
-/// nothing: they pass beside the gate or the bounds), and its verdict is
-/// kept for the last few tiles; trying stops where it does not pay (64
-/// tries that spared fewer than 32 rays each: many small instances in
-/// each tile).
+/// once, after 8 of its rays have missed at some cost (a tile with a hit
+/// among them is never tried, nor one whose misses cost the method next to
+/// nothing: they pass beside the gate or the bounds; a small object on
+/// screen seldom gets that far), and its verdict is kept for the last few
+/// tiles; trying stops where it does not pay (64 tries that spared fewer
+/// than 32 rays each). The proof, and its program, are made at the first
+/// try: a scene of thousands of small objects makes few.
 class ProvenTiles {
 public:
-    explicit ProvenTiles(const Tape& tape) : proof_(tape) {}
+    explicit ProvenTiles(const Tape& tape) : tape_(tape) {}
 
     enum class State : std::uint8_t { Untried, Proven, Unproven };
     struct Entry {
         CameraFrustum tile;
         std::optional<CameraFrustum::DualBasis> basis;
         State state = State::Untried;
+        std::uint32_t costly_misses = 0;
         std::uint64_t last_use = 0;
     };
     /// The tile's entry: kept, or made now in place of the least recently
@@ -88,17 +91,20 @@ public:
     /// within the box the tile was tried with.
     bool proven_miss(Entry& e, const Ray& ray);
     /// What a traced ray of the entry's tile found, and the evaluations it
-    /// spent: the first costly miss in a tile not yet tried asks for its
-    /// proof over `box` (the leaf's search box).
+    /// spent: enough costly misses in a tile not yet tried ask for its proof
+    /// over `box` (the leaf's search box).
     void traced(Entry& e, const Box3& box, bool hit, std::uint64_t spent, TraceCounters& counters);
     /// A miss that spent fewer evaluations than this is not worth a proof
-    /// (which costs (n + 1)² runs of the ray polynomial and more).
+    /// (which costs (n + 1)² runs of the ray polynomial and more)…
     static constexpr std::uint64_t costly_miss = 3;
+    /// …and a tile is tried after this many.
+    static constexpr std::uint32_t misses_before_proof = 8;
 
     static constexpr std::size_t capacity = 4;
 
 private:
-    PolynomialTileProof proof_;
+    const Tape& tape_;
+    std::unique_ptr<PolynomialTileProof> proof_;  // made at the first try
     std::array<Entry, capacity> entries_{};
     std::size_t count_ = 0, last_ = 0;  // last_: the entry asked for last
     std::uint64_t uses_ = 0, tries_ = 0, spared_ = 0;
