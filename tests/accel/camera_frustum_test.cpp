@@ -68,26 +68,26 @@ TEST(CameraFrustum, ABoxItMissesMeetsNoRayOfTheTile) {
 
 TEST(CameraFrustum, HoldsTheTilesRaysAndNoOthers) {
     const CameraFrustum f = tilted_tile();
-    const CameraFrustum::DualBasis basis = f.dual_basis().value();
+    const CameraFrustum::RayCheck check = f.ray_check().value();
     std::mt19937_64 rng(4);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const auto through = [&](double u, double v) { return Ray{f.origin, normalize(f.forward + f.right * u + f.up * v)}; };
     const double u1 = f.u0 + f.columns * f.du, v1 = f.v0 + f.rows * f.dv;
     for (int i = 0; i < 1000; ++i) {
         const double a = unit(rng), b = unit(rng);
-        EXPECT_TRUE(f.holds(through(f.u0 + a * (u1 - f.u0), f.v0 + b * (v1 - f.v0)), basis)) << i;
+        EXPECT_TRUE(f.holds(through(f.u0 + a * (u1 - f.u0), f.v0 + b * (v1 - f.v0)), check)) << i;
         // Beside the rectangle by a tenth of a pixel or more, or from another point: not the tile's.
         const double off = 0.1 + 3.0 * unit(rng);
-        EXPECT_FALSE(f.holds(through(u1 + off * f.du, f.v0 + b * (v1 - f.v0)), basis)) << i;
-        EXPECT_FALSE(f.holds(through(f.u0 + a * (u1 - f.u0), f.v0 - off * f.dv), basis)) << i;
+        EXPECT_FALSE(f.holds(through(u1 + off * f.du, f.v0 + b * (v1 - f.v0)), check)) << i;
+        EXPECT_FALSE(f.holds(through(f.u0 + a * (u1 - f.u0), f.v0 - off * f.dv), check)) << i;
         Ray moved = through(f.u0 + a * (u1 - f.u0), f.v0 + b * (v1 - f.v0));
         moved.origin.x += 1e-12;
-        EXPECT_FALSE(f.holds(moved, basis)) << i;
+        EXPECT_FALSE(f.holds(moved, check)) << i;
     }
     // The tile's corners are its own; a ray backwards is not.
-    EXPECT_TRUE(f.holds(through(f.u0, f.v0), basis));
-    EXPECT_TRUE(f.holds(through(u1, v1), basis));
-    EXPECT_FALSE(f.holds(Ray{f.origin, -f.forward}, basis));
+    EXPECT_TRUE(f.holds(through(f.u0, f.v0), check));
+    EXPECT_TRUE(f.holds(through(u1, v1), check));
+    EXPECT_FALSE(f.holds(Ray{f.origin, -f.forward}, check));
 }
 
 TEST(CameraFrustum, BoxesBehindBesideAndAroundTheEye) {
@@ -121,7 +121,7 @@ TEST(CameraFrustum, ASubnormalBoxOnATilesRayIsNotCulled) {
     f.du = f.dv = 0.01;
     f.columns = f.rows = 1;
     const Vec3d d{5, -11, 19};
-    ASSERT_TRUE(f.holds(Ray{f.origin, d}, f.dual_basis().value()));
+    ASSERT_TRUE(f.holds(Ray{f.origin, d}, f.ray_check().value()));
     const Vec3d q = d * std::numeric_limits<double>::denorm_min();  // on the ray at t = 2⁻¹⁰⁷⁴
     EXPECT_FALSE(f.misses({q, q}));
 }

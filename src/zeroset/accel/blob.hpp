@@ -82,7 +82,7 @@ struct BlobScratch {
     struct TileList {
         std::uint64_t blob = 0;  // Blob::id_
         CameraFrustum tile;
-        CameraFrustum::DualBasis basis;
+        CameraFrustum::RayCheck check;
         struct Entry {
             double nearest;  // no point of the component's reach is nearer the eye
             std::uint32_t component;

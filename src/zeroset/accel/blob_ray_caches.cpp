@@ -62,17 +62,17 @@ const BlobScratch::TileList* Blob::tile_list(const Ray& ray, const CameraFrustum
     }
     list->last_use = s.tile_list_uses;
     s.last_tile_list = static_cast<std::size_t>(list - s.tile_lists.data());
-    return list->usable && tile.holds(ray, list->basis) ? list : nullptr;
+    return list->usable && tile.holds(ray, list->check) ? list : nullptr;
 }
 
 void Blob::fill_tile_list(BlobScratch::TileList& list) const {
     const CameraFrustum& tile = list.tile;
     list.entries.clear();
-    const auto basis = tile.dual_basis();
-    list.usable = basis.has_value();
+    const auto check = tile.ray_check();
+    list.usable = check.has_value();
     if (!list.usable) return;
-    list.basis = *basis;
-    const CameraFrustum::Planes planes = tile.planes(*basis);
+    list.check = *check;
+    const CameraFrustum::Planes planes = tile.planes(check->basis);
     bvh_->select([&](const Box3& box) { return !tile.misses(box, planes); },
                  [&](std::uint32_t i) {
                      const Box3 box = reach_box(i);

@@ -67,16 +67,23 @@ bool CameraFrustum::misses(const Box3& box, const Planes& planes) const {
     return false;
 }
 
-bool CameraFrustum::holds(const Ray& ray, const DualBasis& basis) const {
-    if (!(ray.origin == origin)) return false;
-    const double s = dot(basis.to_s, ray.dir);
-    if (!(s > 0.0)) return false;
-    const double u = dot(basis.to_su, ray.dir) / s, v = dot(basis.to_sv, ray.dir) / s;
-    const Rectangle tile = rectangle();
+std::optional<CameraFrustum::RayCheck> CameraFrustum::ray_check() const {
+    const auto basis = dual_basis();
+    if (!basis) return std::nullopt;
     // Within half the least margin misses() allows: a box that meets the
     // ray projects over its (u, v), so misses() keeps it for the tile.
+    const Rectangle tile = rectangle();
     const double margin = 0.5 * tile.margin();
-    return u >= tile.u_lo - margin && u <= tile.u_hi + margin && v >= tile.v_lo - margin && v <= tile.v_hi + margin;
+    return RayCheck{*basis, {tile.u_lo - margin, tile.u_hi + margin, tile.v_lo - margin, tile.v_hi + margin}};
+}
+
+bool CameraFrustum::holds(const Ray& ray, const RayCheck& check) const {
+    if (!(ray.origin == origin)) return false;
+    const double s = dot(check.basis.to_s, ray.dir);
+    if (!(s > 0.0)) return false;
+    const double u = dot(check.basis.to_su, ray.dir) / s, v = dot(check.basis.to_sv, ray.dir) / s;
+    const Rectangle& r = check.accepted;
+    return u >= r.u_lo && u <= r.u_hi && v >= r.v_lo && v <= r.v_hi;
 }
 
 }  // namespace zeroset

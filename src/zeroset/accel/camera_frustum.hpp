@@ -77,12 +77,6 @@ struct CameraFrustum {
     /// are asked.)
     [[nodiscard]] bool misses(const Box3& box) const;
     [[nodiscard]] bool misses(const Box3& box, const Planes& planes) const;
-    /// True when the ray is one of the tile's: it leaves the origin,
-    /// exactly, through the tile's rectangle of the image plane (within a
-    /// margin far narrower than the one misses() allows), so it meets no box
-    /// that misses() culls. False when that is not certain.
-    [[nodiscard]] bool holds(const Ray& ray, const DualBasis& basis) const;
-
     /// The tile's rectangle [u_lo, u_hi] × [v_lo, v_hi] and a margin far
     /// wider than the rounding of a ray's (u, v).
     struct Rectangle {
@@ -92,6 +86,20 @@ struct CameraFrustum {
     /// The rectangle widened by the margin misses() allows: the (u, v) of
     /// every ray holds() accepts lie well inside.
     [[nodiscard]] Rectangle widened_rectangle() const;
+
+    /// What holds() asks of a ray, worked out once for the tile: the dual
+    /// basis and the rectangle widened by half the margin misses() allows.
+    /// Nothing when the three directions are degenerate.
+    struct RayCheck {
+        DualBasis basis;
+        Rectangle accepted;
+    };
+    [[nodiscard]] std::optional<RayCheck> ray_check() const;
+    /// True when the ray is one of the tile's: it leaves the origin,
+    /// exactly, through the tile's rectangle of the image plane (within a
+    /// margin far narrower than the one misses() allows), so it meets no box
+    /// that misses() culls. False when that is not certain.
+    [[nodiscard]] bool holds(const Ray& ray, const RayCheck& check) const;
 
 private:
     [[nodiscard]] Rectangle rectangle() const;

@@ -287,12 +287,12 @@ ProvenTiles::Entry* ProvenTiles::entry(const CameraFrustum& tile) {
                                              [](const Entry& a, const Entry& b) { return a.last_use < b.last_use; });
         last_ = static_cast<std::size_t>(oldest - entries_.begin());
     }
-    entries_[last_] = Entry{tile, tile.dual_basis(), State::Untried, 0, ++uses_};
+    entries_[last_] = Entry{tile, tile.ray_check(), State::Untried, 0, ++uses_};
     return &entries_[last_];
 }
 
 bool ProvenTiles::proven_miss(Entry& e, const Ray& ray) {
-    if (e.state != State::Proven || !e.tile.holds(ray, *e.basis)) return false;
+    if (e.state != State::Proven || !e.tile.holds(ray, *e.check)) return false;
     e.last_use = ++uses_;
     ++spared_;
     return true;
@@ -301,7 +301,7 @@ bool ProvenTiles::proven_miss(Entry& e, const Ray& ray) {
 void ProvenTiles::traced(Entry& e, const Box3& box, bool hit, std::uint64_t spent, TraceCounters& counters) {
     e.last_use = ++uses_;
     if (e.state != State::Untried) return;
-    if (hit || stopped_ || !e.basis) {
+    if (hit || stopped_ || !e.check) {
         e.state = State::Unproven;
         return;
     }

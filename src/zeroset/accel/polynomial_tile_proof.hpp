@@ -79,7 +79,7 @@ public:
     enum class State : std::uint8_t { Untried, Proven, Unproven };
     struct Entry {
         CameraFrustum tile;
-        std::optional<CameraFrustum::DualBasis> basis;
+        std::optional<CameraFrustum::RayCheck> check;
         State state = State::Untried;
         std::uint32_t costly_misses = 0;
         std::uint64_t last_use = 0;
