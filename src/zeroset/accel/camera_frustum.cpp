@@ -20,6 +20,19 @@ std::optional<CameraFrustum::DualBasis> CameraFrustum::dual_basis() const {
     return DualBasis{cross(right, up) / det, cross(up, forward) / det, cross(forward, right) / det};
 }
 
+std::optional<Span> CameraFrustum::depths_of(const Box3& box) const {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3d p{(corner & 1) ? box.hi.x : box.lo.x, (corner & 2) ? box.hi.y : box.lo.y,
+                      (corner & 4) ? box.hi.z : box.lo.z};
+        const double s = depth_of(p);
+        lo = std::min(lo, s);
+        hi = std::max(hi, s);
+    }
+    if (!std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
+    return Span{lo, hi};
+}
+
 CameraFrustum::Rectangle CameraFrustum::rectangle() const {
     return {std::min(u0, u0 + columns * du), std::max(u0, u0 + columns * du), std::min(v0, v0 + rows * dv),
             std::max(v0, v0 + rows * dv)};

@@ -53,6 +53,10 @@ struct CameraFrustum {
     /// depth s (the linear form that is 1 on `forward` and 0 on `right`
     /// and `up`).
     [[nodiscard]] double depth_of(const Vec3d& p) const { return dot(depth_form(), p - origin); }
+    /// The least and largest depth of the box's points: depth is linear, so
+    /// its corners' (as rounded; callers widen them). Nothing when either
+    /// is not finite.
+    [[nodiscard]] std::optional<Span> depths_of(const Box3& box) const;
     /// How fast depth grows along direction d: a ray's depth is t times this.
     [[nodiscard]] double depth_rate(const Vec3d& d) const { return dot(depth_form(), d); }
     /// The dual basis of (forward, right, up): a point's offset w from the

@@ -40,18 +40,12 @@ void FrustumCuller::cull(const CameraFrustum& frustum, const Box3& box, std::vec
     first_depth_ = &first_depth;
     first_depth.assign(static_cast<std::size_t>(frustum.pixels()), unreached);
     // The depths of the box, a little wider than its corners' rounded ones.
-    double s_lo = unreached, s_hi = -unreached;
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3d p{(corner & 1) ? box.hi.x : box.lo.x, (corner & 2) ? box.hi.y : box.lo.y,
-                      (corner & 4) ? box.hi.z : box.lo.z};
-        const double s = frustum.depth_of(p);
-        s_lo = std::min(s_lo, s);
-        s_hi = std::max(s_hi, s);
-    }
-    if (!std::isfinite(s_lo) || !std::isfinite(s_hi)) {  // a degenerate frustum: cull nothing
+    const std::optional<Span> depths = frustum.depths_of(box);
+    if (!depths) {  // a degenerate frustum: cull nothing
         std::fill(first_depth.begin(), first_depth.end(), 0.0);
         return;
     }
+    double s_lo = depths->t0, s_hi = depths->t1;
     const double margin = box_pad * std::max(std::abs(s_lo), std::abs(s_hi));
     s_lo = std::max(0.0, s_lo - margin);  // the rays start at the eye
     s_hi += margin;

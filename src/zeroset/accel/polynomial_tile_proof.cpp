@@ -97,16 +97,11 @@ struct Depths {
     double lo, hi, centre;
 };
 
-std::optional<Depths> depths_of(const CameraFrustum& tile, const Box3& box) {
+std::optional<Depths> proof_depths(const CameraFrustum& tile, const Box3& box) {
     if (!box.valid()) return std::nullopt;
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (int c = 0; c < 8; ++c) {
-        const Vec3d p{c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y, c & 4 ? box.hi.z : box.lo.z};
-        const double depth = tile.depth_of(p);
-        lo = std::min(lo, depth);
-        hi = std::max(hi, depth);
-    }
-    if (!std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
+    const std::optional<Span> corners = tile.depths_of(box);
+    if (!corners) return std::nullopt;
+    double lo = corners->t0, hi = corners->t1;
     const double pad = 1e-9 * (std::abs(lo) + std::abs(hi));
     lo = std::max(lo - pad, 0.0);
     hi += pad;
@@ -128,7 +123,7 @@ PolynomialTileProof::PolynomialTileProof(const Tape& tape) {
 
 bool PolynomialTileProof::proves_outside(const CameraFrustum& tile, const Box3& box, TraceCounters& counters) {
     if (!program_) return false;
-    const std::optional<Depths> depths = depths_of(tile, box);
+    const std::optional<Depths> depths = proof_depths(tile, box);
     if (!depths) return false;
     if (depths->hi < depths->lo) return true;  // the box lies behind the eye
     const int n = program_->degree();
