@@ -38,8 +38,8 @@ T kernel_value(BlobKernel kernel, double u, double blobbiness) {
             const T one_minus = T(1.0) - sqrt(w);
             return T(1.5) * one_minus * one_minus;
         }
-        case BlobKernel::Soft:
-        case BlobKernel::PovRay: {
+        case BlobKernel::PovRay: return u >= 1.0 ? T(0.0) : povray_kernel(w);
+        case BlobKernel::Soft: {
             if (u >= 1.0) return T(0.0);
             const std::span<const double> c = blob_kernel_info(kernel).polynomial;
             T sum(c.back());
@@ -61,8 +61,8 @@ T kernel_slope(BlobKernel kernel, double u, double blobbiness) {
             if (u <= 1.0 / 9.0) return T(-3.0);
             return T(-1.5) * (T(1.0) / sqrt(w) - T(1.0));
         }
-        case BlobKernel::Soft:
-        case BlobKernel::PovRay: {
+        case BlobKernel::PovRay: return u >= 1.0 ? T(0.0) : T(-2.0) * (T(1.0) - w);
+        case BlobKernel::Soft: {
             if (u >= 1.0) return T(0.0);
             const std::span<const double> c = blob_kernel_info(kernel).polynomial;
             T sum(static_cast<double>(c.size() - 1) * c.back());
@@ -147,7 +147,7 @@ KernelValue kernel_at(BlobKernel kernel, double u, double blobbiness) {
     return {kernel_value<double>(kernel, u, blobbiness), kernel_slope<double>(kernel, u, blobbiness)};
 }
 
-double kernel_value_at(BlobKernel kernel, double u, double blobbiness) {
+double other_kernel_value_at(BlobKernel kernel, double u, double blobbiness) {
     return kernel_value<double>(kernel, u, blobbiness);
 }
 

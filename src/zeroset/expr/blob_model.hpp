@@ -49,14 +49,29 @@ std::span<const BlobKernelInfo> blob_kernels();
 const BlobKernelInfo& blob_kernel_info(BlobKernel kernel);
 std::optional<BlobKernel> blob_kernel_named(std::string_view name);
 
+/// POV-Ray's kernel (1 − u)² on [0, 1), for doubles and intervals: in this
+/// factored form, not the table's expanded one, so that near u = 1, where K
+/// is small, it is found to a few units of itself (1 − u is exact there)
+/// rather than of 1.
+template <class T>
+T povray_kernel(const T& u) {
+    const T w = T(1.0) - u;
+    return w * w;
+}
+
 /// K(u) and dK/du for u ≥ 0 (`blobbiness` is Blinn's B; the others ignore it).
 struct KernelValue {
     double value;
     double slope;
 };
 KernelValue kernel_at(BlobKernel kernel, double u, double blobbiness);
-/// K(u) alone (one exponential for Blinn's, not two).
-double kernel_value_at(BlobKernel kernel, double u, double blobbiness);
+/// K(u) alone for the kernels other than POV-Ray's (one exponential for Blinn's, not two).
+double other_kernel_value_at(BlobKernel kernel, double u, double blobbiness);
+/// K(u) alone: POV-Ray's inline (blobs' bounds ask for it once a component and segment).
+inline double kernel_value_at(BlobKernel kernel, double u, double blobbiness) {
+    if (kernel != BlobKernel::PovRay) return other_kernel_value_at(kernel, u, blobbiness);
+    return u >= 1.0 ? 0.0 : povray_kernel(u);
+}
 /// An outward-rounded enclosure of K over u ∈ U (U ≥ 0): every kernel
 /// decreases in u, so it is [K(U.hi), K(U.lo)] widened by the evaluations'
 /// rounding.
