@@ -408,11 +408,11 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
             if (e.t > done) {
                 // Every component at t0 is in: is the ray inside already? (Not
                 // asked of the quadratic pieces, which are the ray's own: see
-                // BlobSegmentSolver's quadratic roots.)
+                // BlobSegmentSolver's quadratic roots; nor where none is in
+                // reach, as from a camera outside: there f = T.)
                 if (!started && !settings_.metaball_quadratics) {
                     started = true;
-                    const double start = value_on_ray(s, span.t0);
-                    if (start <= 0.0) {
+                    if (!s.active.empty() && value_on_ray(s, span.t0) <= 0.0) {
                         hit = span.t0;
                         return false;
                     }
