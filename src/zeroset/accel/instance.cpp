@@ -25,7 +25,8 @@ Ray Instance::to_child(const Ray& ray) const {
 
 void Instance::lift(Hit& hit) const {
     SurfaceRef& s = hit.surface;
-    s.to_local = s.to_local * to_child_;
+    // A leaf's own map is mostly the identity, and I·M is M exactly: no product.
+    s.to_local = s.to_local.is_identity() ? to_child_ : s.to_local * to_child_;
     s.scale *= stretch_;
     if (s.material == no_material) s.material = material_;
 }
