@@ -35,18 +35,33 @@ std::optional<double> closed_form_root(std::span<const double> p, double a, doub
 }
 }  // namespace
 
-PolynomialSample sample_polynomial(std::span<const double> p, double t) {
+namespace {
+/// sample_polynomial over `size` coefficients; with a size fixed at compile
+/// time the loop unrolls (a hit's Newton steps take a few of these).
+template <std::size_t Size = 0>
+PolynomialSample sample_coefficients(const double* p, std::size_t size, double t) {
+    if constexpr (Size > 0) size = Size;
     double value = 0.0;
     double derivative = 0.0;
     double bound = 0.0;
     const double x = std::abs(t);
-    for (std::size_t i = p.size(); i-- > 0;) {
+    for (std::size_t i = size; i-- > 0;) {
         derivative = derivative * t + value;
         value = value * t + p[i];
         bound = bound * x + std::abs(p[i]);
     }
-    const double n2u = static_cast<double>(p.size()) * eps;
+    const double n2u = static_cast<double>(size) * eps;
     return {t, value, derivative, std::abs(value) <= n2u / (1.0 - n2u) * bound};
+}
+}  // namespace
+
+PolynomialSample sample_polynomial(std::span<const double> p, double t) {
+    // Quartics (POV-Ray's blobs and quartic surfaces) and sextics (soft objects, Barth's) come most.
+    switch (p.size()) {
+        case 5: return sample_coefficients<5>(p.data(), 5, t);
+        case 7: return sample_coefficients<7>(p.data(), 7, t);
+        default: return sample_coefficients(p.data(), p.size(), t);
+    }
 }
 
 double monotone_root(std::span<const double> p, PolynomialSample lo, PolynomialSample hi, int& evaluations,

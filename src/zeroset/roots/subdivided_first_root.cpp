@@ -63,7 +63,7 @@ PossibleRoot scan(const PolynomialEnclosure& f, double a, double b) {
 /// The subdivision with coefficient arrays of `Capacity` (> the degree).
 template <int Capacity>
 PossibleRoot subdivide(const PolynomialEnclosure& f, double t0, double t1, const PolynomialScratch& bernstein,
-                       double magnitude, double tolerance, PossibleRoot r) {
+                       double magnitude, double span_radius, double tolerance, PossibleRoot r) {
     struct Piece {
         double a, b;
         int depth;
@@ -83,7 +83,6 @@ PossibleRoot subdivide(const PolynomialEnclosure& f, double t0, double t1, const
     ++top;
     const double noise = bernstein_noise(n, magnitude);
     const double per_split = static_cast<double>(n) * eps * magnitude;
-    const double span_radius = enclosure_bound(f, std::max(-t0, t1));
     while (top > 0) {
         // The piece on top, read where it lies: copied whole, its
         // coefficients (written one by one by the split) were read back in
@@ -149,30 +148,36 @@ PossibleRoot subdivide(const PolynomialEnclosure& f, double t0, double t1, const
 PossibleRoot first_possible_root_subdividing(const PolynomialEnclosure& f, double t0, double t1, double tolerance) {
     PossibleRoot r;
     const int n = static_cast<int>(f.value.size()) - 1;
-    const PolynomialSample start = sample_polynomial(f.value, t0);
-    ++r.evaluations;
-    if (std::abs(start.value) <= enclosure_bound(f, t0)) {  // F may vanish at once
-        r.found = true;
-        r.t = t0;
-        r.sign_change = start.value == 0.0;
-        return r;
-    }
-    // Below 0 at the start (a shadow ray from a hair inside): the signs'
-    // runs assume the start is above, so the scan takes the whole span.
-    if (start.value < 0.0) {
-        const PossibleRoot scanned = scan(f, t0, t1);
-        r.found = scanned.found;
-        r.t = scanned.t;
-        r.sign_change = scanned.sign_change;
-        r.evaluations += scanned.evaluations;
-        return r;
-    }
     double magnitude = 0.0;
     PolynomialScratch bernstein;
     to_bernstein(f.value, n, t0, t1, bernstein, magnitude);
     ++r.evaluations;
-    if (n < 8) return subdivide<8>(f, t0, t1, bernstein, magnitude, tolerance, r);
-    return subdivide<max_polynomial_degree + 1>(f, t0, t1, bernstein, magnitude, tolerance, r);
+    // The first coefficient is F̂(t0) within the conversion's noise, and the
+    // bound at the span's far end is at least the one at t0: above both, F
+    // is proven positive at the start, as it mostly is, without its own test.
+    const double span_radius = enclosure_bound(f, std::max(-t0, t1));
+    if (!(bernstein[0] > bernstein_noise(n, magnitude) + span_radius)) {
+        const PolynomialSample start = sample_polynomial(f.value, t0);
+        ++r.evaluations;
+        if (std::abs(start.value) <= enclosure_bound(f, t0)) {  // F may vanish at once
+            r.found = true;
+            r.t = t0;
+            r.sign_change = start.value == 0.0;
+            return r;
+        }
+        // Below 0 at the start (a shadow ray from a hair inside): the signs'
+        // runs assume the start is above, so the scan takes the whole span.
+        if (start.value < 0.0) {
+            const PossibleRoot scanned = scan(f, t0, t1);
+            r.found = scanned.found;
+            r.t = scanned.t;
+            r.sign_change = scanned.sign_change;
+            r.evaluations += scanned.evaluations;
+            return r;
+        }
+    }
+    if (n < 8) return subdivide<8>(f, t0, t1, bernstein, magnitude, span_radius, tolerance, r);
+    return subdivide<max_polynomial_degree + 1>(f, t0, t1, bernstein, magnitude, span_radius, tolerance, r);
 }
 
 }  // namespace zeroset
