@@ -97,10 +97,11 @@ BlobScratch& Blob::scratch_for(TraceScratch& scratch) const {
     return *slot;
 }
 
-std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay& q, Span part) const {
+std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay& q, Span part,
+                                              const NearestApproach& approach) const {
     std::optional<ReachOnRay> reach;
-    if (dot(q.qd, q.qd) > 0.0) {
-        reach = reach_on_ray(q.q0, q.qd, c.reach);
+    if (approach.a2 > 0.0) {
+        reach = reach_on_ray(approach, c.reach);
     } else if (const double u = dot(q.q0, q.q0); u <= c.reach) {  // a ray along a cylinder's axis: the body's u is constant
         reach = ReachOnRay{{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}, 0.0, u};
     }
@@ -109,7 +110,7 @@ std::optional<KernelOnRay> Blob::part_on_ray(const Component& c, const MappedRay
     if (!(t_in <= t_out)) return std::nullopt;
     KernelOnRay k{q.q0, q.qd, q.q0_error, q.qd_error, c.strength, c.blobbiness, t_in, t_out,
                   static_cast<std::uint32_t>(&c - components_.data())};
-    if (dot(q.qd, q.qd) > 0.0) k.nearest = reach->nearest;
+    if (approach.a2 > 0.0) k.nearest = reach->nearest;
     if (!settings_.metaball_quadratics) {
         // The nearest approach found already serves unless a cylinder's part ends before it.
         const bool within = reach->nearest >= t_in && reach->nearest <= t_out;
@@ -196,7 +197,8 @@ void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add, bool beside
     // Each round end lies in the tube of reach about the axis line: a ray
     // that misses the tube meets no part, and an end whose part of the ray
     // lies outside the tube need not be mapped.
-    const std::optional<Span> tube = tube_on_ray(across, c.reach);
+    const NearestApproach to_axis = nearest_approach(across.q0, across.qd);
+    const std::optional<Span> tube = tube_on_ray(across, c.reach, to_axis);
     if (!tube) return;
     const auto within = [&](const Span& part) { return part.t0 <= tube->t1 && part.t1 >= tube->t0; };
     // In the order the ray meets them, so that the events come sorted when they can.
@@ -207,7 +209,7 @@ void Blob::on_ray(const RaySizes& sizes, std::uint32_t i, Add&& add, bool beside
     const auto about_end = [&] { return about_point(sizes, c, c.end, c.end_largest); };
     if (within(first))
         if (const auto k = part_on_ray(c, forwards ? about_start() : about_end(), first)) add(*k);
-    if (const auto k = part_on_ray(c, across, body)) add(*k);
+    if (const auto k = part_on_ray(c, across, body, to_axis)) add(*k);
     if (within(last))
         if (const auto k = part_on_ray(c, forwards ? about_end() : about_start(), last)) add(*k);
 }
@@ -232,13 +234,11 @@ bool Blob::passes_beside_axis(const Ray& ray, double origin_length, double dir_l
     return well_scaled(keep * keep) && well_scaled(bound) && apart * apart > bound;
 }
 
-std::optional<Span> Blob::tube_on_ray(const MappedRay& across, double reach) {
+std::optional<Span> Blob::tube_on_ray(const MappedRay& across, double reach, const NearestApproach& approach) {
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const Span undecided{-infinity, infinity};
-    const double a2 = dot(across.qd, across.qd);
+    const auto [a2, nearest, u_min] = approach;
     if (!(a2 > 0.0)) return undecided;  // along the axis (or NaN)
-    const double nearest = -dot(across.q0, across.qd) / a2;
-    const Vec3d closest = across.q0 + nearest * across.qd;
     // The radius, wider by the coordinates' errors (twice over) at any t the
     // span can reach — within twice the plain radius's half-width of the
     // nearest approach — with their rounding here, and 10⁻⁹ of itself: the
@@ -249,7 +249,6 @@ std::optional<Span> Blob::tube_on_ray(const MappedRay& across, double reach) {
                          4.0 * u4 * (max_abs(across.q0) + reach_t * max_abs(across.qd));
     if (!(error <= 0.5 * plain)) return undecided;  // the widening would pass the t it was worked out for
     const double radius = plain + 2.0 * error;
-    const double u_min = dot(closest, closest);
     if (u_min > radius * radius) return std::nullopt;
     const double half = std::sqrt((radius * radius - u_min) / a2) * (1.0 + 1e-9) + 1e-9 * std::abs(nearest);
     if (!(half >= 0.0) || !std::isfinite(nearest)) return undecided;  // NaN, or overflow

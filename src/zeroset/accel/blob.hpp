@@ -147,7 +147,12 @@ public:
     /// Where the ray, mapped about a cylinder's axis line, is within its
     /// reach of the line, widened past any rounding (the whole ray when
     /// that is not decided); nothing when it never is.
-    [[nodiscard]] static std::optional<Span> tube_on_ray(const MappedRay& across, double reach);
+    [[nodiscard]] static std::optional<Span> tube_on_ray(const MappedRay& across, double reach) {
+        return tube_on_ray(across, reach, nearest_approach(across.q0, across.qd));
+    }
+    /// The same from the mapped ray's nearest approach to the axis, found already.
+    [[nodiscard]] static std::optional<Span> tube_on_ray(const MappedRay& across, double reach,
+                                                         const NearestApproach& approach);
     /// A cylinder's axis line in the blob's space, with the sizes the
     /// rounding of passes_beside_axis is measured in.
     struct AxisLine {
@@ -213,8 +218,13 @@ private:
     /// |coordinate| is given): q = (p − point)/R.
     [[nodiscard]] static MappedRay about_point(const RaySizes& ray, const Component& c, const Vec3d& point,
                                                double point_largest);
-    /// The component's kernel along the mapped ray, within reach and the span `part`.
-    [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part) const;
+    /// The component's kernel along the mapped ray, within reach and the span
+    /// `part`, from the mapped ray's nearest approach (to its centre or axis).
+    [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part,
+                                                         const NearestApproach& approach) const;
+    [[nodiscard]] std::optional<KernelOnRay> part_on_ray(const Component& c, const MappedRay& q, Span part) const {
+        return part_on_ray(c, q, part, nearest_approach(q.q0, q.qd));
+    }
 
     BlobScratch& scratch_for(TraceScratch& scratch) const;
     /// For a camera ray of `tile`: the tile's components nearest first,

@@ -65,17 +65,31 @@ struct ReachOnRay {
     double nearest;
     double u_min;
 };
-/// Inline: returned through memory, the result was read back in wider
-/// loads than it was written with, a stall on every component a ray meets.
-inline std::optional<ReachOnRay> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach) {
+/// The ray q(t) = q0 + t·qd's nearest approach to the origin as computed:
+/// a2 = |qd|², its t and u = |q(t)|² there (NaN or ∞ where a2 = 0).
+struct NearestApproach {
+    double a2;
+    double nearest;
+    double u_min;
+};
+inline NearestApproach nearest_approach(const Vec3d& q0, const Vec3d& qd) {
     const double a2 = dot(qd, qd);
-    if (!(a2 > 0.0)) return std::nullopt;
     const double nearest = -dot(q0, qd) / a2;
     const Vec3d closest = q0 + nearest * qd;
-    const double u_min = dot(closest, closest);
-    if (!(u_min <= reach)) return std::nullopt;
+    return {a2, nearest, dot(closest, closest)};
+}
+/// reach_on_ray from the ray's nearest approach, found already (a
+/// cylinder's tube test finds its body's).
+/// Inline: returned through memory, the result was read back in wider
+/// loads than it was written with, a stall on every component a ray meets.
+inline std::optional<ReachOnRay> reach_on_ray(const NearestApproach& approach, double reach) {
+    const auto [a2, nearest, u_min] = approach;
+    if (!(a2 > 0.0) || !(u_min <= reach)) return std::nullopt;
     const double half = std::sqrt((reach - u_min) / a2) * (1.0 + 1e-12) + 1e-12 * std::abs(nearest);
     return ReachOnRay{{nearest - half, nearest + half}, nearest, u_min};
+}
+inline std::optional<ReachOnRay> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach) {
+    return reach_on_ray(nearest_approach(q0, qd), reach);
 }
 
 /// A bound on the rounding of each coordinate of m·v (m·(v, 1) for a point).
