@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "zeroset/accel/spans_from_roots.hpp"
 #include "zeroset/accel/trace_scratch.hpp"
@@ -24,6 +25,9 @@ constexpr std::size_t few_components = 4;
 /// far from underflow and overflow, where the beside tests' rounding
 /// arguments hold.
 bool well_scaled(double square) { return square >= 0x1p-900 && square <= 0x1p900; }
+
+/// Whether a component the ray meets counts within [t_min, t_max].
+bool meets(const KernelOnRay& k, double t_min, double t_max) { return k.t_out >= t_min && k.t_in <= t_max; }
 
 /// The events' heap order: the earliest on top, and at equal t entries first.
 bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
@@ -261,7 +265,7 @@ void Blob::gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, Tr
     const RaySizes sizes(ray);
     bvh_->traverse(ray, t_min, t_max, [&](std::uint32_t i, double limit) {
         on_ray(sizes, i, [&](const KernelOnRay& k) {
-            if (k.t_out >= t_min && k.t_in <= t_max) add_events(k, t_min, t_max, s);
+            if (meets(k, t_min, t_max)) add_events(k, t_min, t_max, s);
         });
         return limit;  // every component along the ray: the events need them all
     });
@@ -401,9 +405,16 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
     bool started = false;   // whether the start was checked
     std::optional<double> hit;
     bool failed = false;
-    const auto advance = [&](double frontier) {
-        while (!s.events.empty() && s.events.front().t < frontier) {
-            const BlobScratch::Event e = s.events.front();
+    // The events wait in a heap, earliest on top — or, when every one is
+    // gathered before the first is taken (`Sorted`: std::true_type), sorted
+    // latest first and taken from the back, without the heap's moves.
+    const auto advance = [&]<class Sorted = std::false_type>(double frontier, Sorted = {}) {
+        const auto next_event = [&]() -> const BlobScratch::Event& {
+            if constexpr (Sorted::value) return s.events.back();
+            return s.events.front();
+        };
+        while (!s.events.empty() && next_event().t < frontier) {
+            const BlobScratch::Event e = next_event();
             if (e.t > done) {
                 // Every component at t0 is in: is the ray inside already? (Not
                 // asked of the quadratic pieces, which are the ray's own: see
@@ -442,7 +453,7 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
                 }
                 done = e.t;
             }
-            std::pop_heap(s.events.begin(), s.events.end(), later);
+            if constexpr (!Sorted::value) std::pop_heap(s.events.begin(), s.events.end(), later);
             s.events.pop_back();
             apply(e, s);
         }
@@ -453,7 +464,7 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
         on_ray(
             sizes, i,
             [&](const KernelOnRay& k) {
-                if (!(k.t_out >= span.t0 && k.t_in <= span.t1)) return;
+                if (!meets(k, span.t0, span.t1)) return;
                 const std::size_t before = s.events.size();
                 add_events(k, span.t0, span.t1, s);
                 for (std::size_t j = before; j < s.events.size(); ++j)
@@ -464,8 +475,12 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
     const bool few = components_.size() <= few_components;
     const BlobScratch::TileList* list = !few && scratch.camera_frustum ? tile_list(ray, *scratch.camera_frustum, s) : nullptr;
     if (few) {
-        for (std::uint32_t i = 0; i < components_.size(); ++i) meet(i);
-        advance(std::numeric_limits<double>::infinity());
+        for (std::uint32_t i = 0; i < components_.size(); ++i)
+            on_ray(sizes, i, [&](const KernelOnRay& k) {
+                if (meets(k, span.t0, span.t1)) add_events(k, span.t0, span.t1, s);
+            });
+        std::sort(s.events.begin(), s.events.end(), later);
+        advance(std::numeric_limits<double>::infinity(), std::true_type{});
     } else if (list) {
         ++scratch.counters.blob_list_rays;
         // The ray leaves the eye: a component no nearer it than `nearest`
