@@ -94,8 +94,9 @@ public:
     /// spent: enough costly misses in a tile not yet tried ask for its proof
     /// over `box` (the leaf's search box).
     void traced(Entry& e, const Box3& box, bool hit, std::uint64_t spent, TraceCounters& counters);
-    /// A miss that spent fewer evaluations than this is not worth a proof
-    /// (which costs (n + 1)² runs of the ray polynomial and more)…
+    /// A miss that spent fewer evaluations than this — a run of the ray
+    /// polynomial and its Bernstein form — is not worth a proof (which
+    /// costs (n + 1)² runs of the ray polynomial and more)…
     static constexpr std::uint64_t costly_miss = 2;
     /// …and a tile is tried after this many.
     static constexpr std::uint32_t misses_before_proof = 8;

@@ -153,7 +153,7 @@ PossibleRoot first_possible_root_subdividing(const PolynomialEnclosure& f, doubl
     to_bernstein(f.value, n, t0, t1, bernstein, magnitude);
     ++r.evaluations;
     // The first coefficient is F̂(t0) within the conversion's noise, and the
-    // bound at the span's far end is at least the one at t0: above both, F
+    // bound at the span's far end (t0 ≤ t1) is at least the one at t0: above both, F
     // is proven positive at the start, as it mostly is, without its own test.
     const double span_radius = enclosure_bound(f, std::max(-t0, t1));
     if (!(bernstein[0] > bernstein_noise(n, magnitude) + span_radius)) {
