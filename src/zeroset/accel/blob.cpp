@@ -20,6 +20,11 @@ constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units 
 // A blob of this many components or fewer (one BVH leaf) meets them all
 // without the tree's walk.
 constexpr std::size_t few_components = 4;
+// A shadow ray through a blob of this many components or fewer gathers
+// every one it meets before it looks for the inside: in a bigger one, a
+// blocked ray would map everything behind its blocker (a side-lit cloud
+// of 100 000 took 0.046 → 0.072 s so).
+constexpr std::size_t small_for_shadows = 16;
 
 /// Whether a square (|d|², or the beside test's bound) is a normal double
 /// far from underflow and overflow, where the beside tests' rounding
@@ -497,6 +502,18 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
             meet(e.component, true);
         }
         if (going) advance(std::numeric_limits<double>::infinity());
+    } else if (query == Query::Any && components_.size() <= small_for_shadows) {
+        // Most shadow rays are not blocked and meet every component on
+        // their way: gathered unordered and sorted once, they skip the
+        // ordered walk's queue and the events' heap.
+        bvh_->traverse(ray, span.t0, span.t1, [&](std::uint32_t i, double limit) {
+            on_ray(sizes, i, [&](const KernelOnRay& k) {
+                if (meets(k, span.t0, span.t1)) add_events(k, span.t0, span.t1, s);
+            });
+            return limit;
+        });
+        std::sort(s.events.begin(), s.events.end(), later);
+        advance(std::numeric_limits<double>::infinity(), std::true_type{});
     } else {
         bvh_->traverse_in_order(ray, span.t0, span.t1, s.queue, [&](std::uint32_t i, double limit) {
             if (i == Bvh::frontier) return advance(limit) ? span.t1 : -std::numeric_limits<double>::infinity();
