@@ -43,10 +43,10 @@ double Blob::beside_bound(const Vec3d& eye, const Component& c, const Vec3d& fro
 const BlobScratch::TileList* Blob::tile_list(const Ray& ray, const CameraFrustum& tile, BlobScratch& s) const {
     ++s.tile_list_uses;
     BlobScratch::TileList* list = &s.tile_lists[s.last_tile_list];  // a tile's rays come in a row
-    if (list->blob != id_ || !(list->tile == tile)) {
+    if (list->blob != id_ || !list->tile.same_as(tile)) {
         list = nullptr;
         for (BlobScratch::TileList& l : s.tile_lists)
-            if (l.blob == id_ && l.tile == tile) list = &l;
+            if (l.blob == id_ && l.tile.same_as(tile)) list = &l;
     }
     if (!list) {
         // More tiles and blobs in turn than the cache holds (instances of a

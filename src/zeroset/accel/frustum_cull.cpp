@@ -165,7 +165,7 @@ const std::vector<double>* CulledTiles::first_depths(const CameraFrustum& tile, 
                                                     TraceCounters& counters) {
     ++uses_;
     for (Culled& c : culled_)
-        if (c.tile == tile) {
+        if (c.tile.same_as(tile)) {
             c.last_use = uses_;
             return &c.first_depth;
         }
