@@ -35,9 +35,10 @@ bool well_scaled(double square) { return square >= 0x1p-900 && square <= 0x1p900
 bool meets(const KernelOnRay& k, double t_min, double t_max) { return k.t_out >= t_min && k.t_in <= t_max; }
 
 /// The events' heap order: the earliest on top, and at equal t entries first.
-bool later(const BlobScratch::Event& a, const BlobScratch::Event& b) {
+/// (A function object, not a function: through a pointer the heap's calls were not inlined.)
+constexpr auto later = [](const BlobScratch::Event& a, const BlobScratch::Event& b) {
     return a.t > b.t || (a.t == b.t && a.kind > b.kind);
-}
+};
 
 // Blob::id_'s source: the per-thread caches tell blobs apart by it.
 std::atomic<std::uint64_t> next_blob_id{1};
