@@ -61,7 +61,7 @@ T kernel_slope(BlobKernel kernel, double u, double blobbiness) {
             if (u <= 1.0 / 9.0) return T(-3.0);
             return T(-1.5) * (T(1.0) / sqrt(w) - T(1.0));
         }
-        case BlobKernel::PovRay: return u >= 1.0 ? T(0.0) : T(-2.0) * (T(1.0) - w);
+        case BlobKernel::PovRay: return u >= 1.0 ? T(0.0) : povray_kernel_slope(w);
         case BlobKernel::Soft: {
             if (u >= 1.0) return T(0.0);
             const std::span<const double> c = blob_kernel_info(kernel).polynomial;
@@ -139,7 +139,7 @@ std::optional<BlobKernel> blob_kernel_named(std::string_view name) {
     return std::nullopt;
 }
 
-KernelValue kernel_at(BlobKernel kernel, double u, double blobbiness) {
+KernelValue other_kernel_at(BlobKernel kernel, double u, double blobbiness) {
     if (kernel == BlobKernel::Blinn) {  // K′ = B·K: one exponential
         const double v = kernel_value<double>(kernel, u, blobbiness);
         return {v, blobbiness * v};

@@ -58,16 +58,27 @@ T povray_kernel(const T& u) {
     const T w = T(1.0) - u;
     return w * w;
 }
+/// Its slope dK/du = −2(1 − u).
+template <class T>
+T povray_kernel_slope(const T& u) {
+    return T(-2.0) * (T(1.0) - u);
+}
 
 /// K(u) and dK/du for u ≥ 0 (`blobbiness` is Blinn's B; the others ignore it).
 struct KernelValue {
     double value;
     double slope;
 };
-KernelValue kernel_at(BlobKernel kernel, double u, double blobbiness);
-/// K(u) alone for the kernels other than POV-Ray's (one exponential for Blinn's, not two).
+/// kernel_at and kernel_value_at for the kernels other than POV-Ray's.
+KernelValue other_kernel_at(BlobKernel kernel, double u, double blobbiness);
 double other_kernel_value_at(BlobKernel kernel, double u, double blobbiness);
-/// K(u) alone: POV-Ray's inline (blobs' bounds ask for it once a component and segment).
+/// POV-Ray's inline: blobs ask for it once a component and segment, a point and a normal.
+inline KernelValue kernel_at(BlobKernel kernel, double u, double blobbiness) {
+    if (kernel != BlobKernel::PovRay) return other_kernel_at(kernel, u, blobbiness);
+    if (u >= 1.0) return {0.0, 0.0};
+    return {povray_kernel(u), povray_kernel_slope(u)};
+}
+/// K(u) alone (one exponential for Blinn's, not two).
 inline double kernel_value_at(BlobKernel kernel, double u, double blobbiness) {
     if (kernel != BlobKernel::PovRay) return other_kernel_value_at(kernel, u, blobbiness);
     return u >= 1.0 ? 0.0 : povray_kernel(u);
