@@ -116,23 +116,6 @@ std::optional<Mat4> Mat4::inverse() const {
     return inv;
 }
 
-Vec3d Mat4::transform_point(const Vec3d& p) const {
-    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
-}
-
-Vec3d Mat4::transform_vector(const Vec3d& v) const {
-    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
-            m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
-}
-
-
-Vec3d Mat4::transpose_transform_vector(const Vec3d& v) const {
-    return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
-            m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
-}
 
 Box3 Mat4::transform_box(const Box3& box) const {
     constexpr double inf = std::numeric_limits<double>::infinity();

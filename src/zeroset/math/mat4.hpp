@@ -29,14 +29,25 @@ struct Mat4 {
     /// The inverse, or nothing when the matrix is singular.
     [[nodiscard]] std::optional<Mat4> inverse() const;
 
+    // Inline: every ray through an instance takes two of these.
     /// Applies the matrix to (p, 1).
-    [[nodiscard]] Vec3d transform_point(const Vec3d& p) const;
+    [[nodiscard]] Vec3d transform_point(const Vec3d& p) const {
+        return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+                m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+                m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+    }
     /// Applies the matrix to (v, 0).
-    [[nodiscard]] Vec3d transform_vector(const Vec3d& v) const;
+    [[nodiscard]] Vec3d transform_vector(const Vec3d& v) const {
+        return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+                m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+    }
     /// Applies the transpose of the linear part to v: for the map from a
     /// parent's space into a child's, this takes a child's gradient (normal)
     /// to the parent's (survey §8: normals by the inverse transpose).
-    [[nodiscard]] Vec3d transpose_transform_vector(const Vec3d& v) const;
+    [[nodiscard]] Vec3d transpose_transform_vector(const Vec3d& v) const {
+        return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
+                m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
+    }
     /// The smallest box containing the image of `box` (its eight corners'
     /// images, rounded outward); an unbounded box stays unbounded.
     [[nodiscard]] Box3 transform_box(const Box3& box) const;
