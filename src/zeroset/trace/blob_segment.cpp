@@ -36,9 +36,6 @@ double mapped_magnitude(const Mat4& m, const Vec3d& v, bool point) {
     return largest;
 }
 
-/// |x| + |y| + |z|: at least the length, without a square root.
-double norm1(const Vec3d& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
-
 /// The three polynomials a component contributes to a segment, in the lanes
 /// of one vector: its term K(u(τ)), the majorant with the inputs' errors, and
 /// the plain majorant. Each lane takes the steps the three would take one by
@@ -222,29 +219,6 @@ ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<
     return {settings.threshold - field, -slope};
 }
 
-double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay& k, double ta, double tb) {
-    if (k.strength < 0.0) return 0.0;
-    // A ray along a cylinder's axis has qd = 0: u is the same everywhere (and [ta, tb] may be endless).
-    const double a2 = dot(k.qd, k.qd);
-    const double nearest = a2 > 0.0 ? std::clamp(-dot(k.q0, k.qd) / a2, ta, tb) : 0.0;
-    const Vec3d q = k.q0 + nearest * k.qd;
-    return kernel_upper_bound_at(settings, k, nearest, dot(q, q));
-}
-
-double kernel_upper_bound_at(const BlobSegmentSettings& settings, const KernelOnRay& k, double t, double u) {
-    if (k.strength < 0.0) return 0.0;
-    // |q| a little short by c, what the mapping and q0 + t·qd may be off
-    // (each coordinate, so √3 of it in length), then K a little high:
-    // every kernel decreases in u. Without a square root: (√u − c)² ≥
-    // u − 2c·√u ≥ u − c·(u + 1), as 2√u ≤ u + 1; c is tiny, so the bound
-    // is as tight. The factors of 1 ± units cover u's own rounding and this
-    // line's. (The sums of |coordinates| bound lengths the same way.)
-    const double c =
-        1.7321 * (k.q0_error + std::abs(t) * k.qd_error + 4.0 * unit_roundoff * (norm1(k.q0) + std::abs(t) * norm1(k.qd)));
-    const double shortest_square =
-        std::max(0.0, (u * (1.0 - 8.0 * unit_roundoff) - c * (u + 1.0) * (1.0 + 4.0 * unit_roundoff)) * (1.0 - 4.0 * unit_roundoff));
-    return k.strength * kernel_value_at(settings.kernel, shortest_square, k.blobbiness) * (1.0 + 4.0 * unit_roundoff);
-}
 
 double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
                               std::span<const std::uint32_t> active, double ta, double tb) {

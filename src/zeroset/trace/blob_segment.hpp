@@ -23,7 +23,9 @@
 // allocated per ray.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -143,13 +145,34 @@ double kernel_value_on_ray(const BlobSegmentSettings& settings, const KernelOnRa
 ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
                                  std::span<const std::uint32_t> active, double t);
 
-/// An upper bound on s·K(u) over [ta, tb] from the component's nearest
-/// approach there, with the error of mapping the ray into its space; 0 for
-/// a negative strength. Exact kernels only.
-double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay& k, double ta, double tb);
-/// The same from a point of the ray already found nearest: t and the
-/// computed u = |q0 + t·qd|² there.
-double kernel_upper_bound_at(const BlobSegmentSettings& settings, const KernelOnRay& k, double t, double u);
+// Inline, as the segments' bounds ask for them once a component and segment.
+/// An upper bound on s·K(u) from a point of the ray already found nearest
+/// the component: t and the computed u = |q0 + t·qd|² there, with the
+/// error of mapping the ray into its space; 0 for a negative strength.
+/// Exact kernels only.
+inline double kernel_upper_bound_at(const BlobSegmentSettings& settings, const KernelOnRay& k, double t, double u) {
+    if (k.strength < 0.0) return 0.0;
+    // |q| a little short by c, what the mapping and q0 + t·qd may be off
+    // (each coordinate, so √3 of it in length), then K a little high:
+    // every kernel decreases in u. Without a square root: (√u − c)² ≥
+    // u − 2c·√u ≥ u − c·(u + 1), as 2√u ≤ u + 1; c is tiny, so the bound
+    // is as tight. The factors of 1 ± units cover u's own rounding and this
+    // line's. (The sums of |coordinates| bound lengths the same way.)
+    constexpr double unit = std::numeric_limits<double>::epsilon() / 2.0;
+    const double c = 1.7321 * (k.q0_error + std::abs(t) * k.qd_error + 4.0 * unit * (norm1(k.q0) + std::abs(t) * norm1(k.qd)));
+    const double shortest_square =
+        std::max(0.0, (u * (1.0 - 8.0 * unit) - c * (u + 1.0) * (1.0 + 4.0 * unit)) * (1.0 - 4.0 * unit));
+    return k.strength * kernel_value_at(settings.kernel, shortest_square, k.blobbiness) * (1.0 + 4.0 * unit);
+}
+/// The same over [ta, tb], from the component's nearest approach there.
+inline double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay& k, double ta, double tb) {
+    if (k.strength < 0.0) return 0.0;
+    // A ray along a cylinder's axis has qd = 0: u is the same everywhere (and [ta, tb] may be endless).
+    const double a2 = dot(k.qd, k.qd);
+    const double nearest = a2 > 0.0 ? std::clamp(-dot(k.q0, k.qd) / a2, ta, tb) : 0.0;
+    const Vec3d q = k.q0 + nearest * k.qd;
+    return kernel_upper_bound_at(settings, k, nearest, dot(q, q));
+}
 
 /// An upper bound on Σ sᵢ·K(uᵢ) over [ta, tb] from the positive components'
 /// nearest approach, with the error of mapping the ray into their spaces:
