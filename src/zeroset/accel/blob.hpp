@@ -259,8 +259,9 @@ private:
     void add_events(const KernelOnRay& k, double t_min, double t_max, BlobScratch& s) const;
     /// An event's change to the components in reach (s.active).
     void apply(const BlobScratch::Event& e, BlobScratch& s) const;
-    /// The components the ray meets within [t_min, t_max], into s.kernels, and their events, sorted.
-    void gather(const Ray& ray, double t_min, double t_max, BlobScratch& s, TraceScratch& scratch) const;
+    /// The components the ray meets within [t_min, t_max], into s.kernels,
+    /// and their events, sorted latest first (the earliest at the back).
+    void gather(const RaySizes& sizes, double t_min, double t_max, BlobScratch& s) const;
     /// Calls on_segment(ta, tb) for each segment with components in reach
     /// whose field may reach the threshold, front to back, with s.active
     /// holding them; it returns false to stop.
