@@ -7,7 +7,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <type_traits>
 
 #include "zeroset/accel/spans_from_roots.hpp"
 #include "zeroset/accel/trace_scratch.hpp"
@@ -34,8 +33,9 @@ bool well_scaled(double square) { return square >= 0x1p-900 && square <= 0x1p900
 /// Whether a component the ray meets counts within [t_min, t_max].
 bool meets(const KernelOnRay& k, double t_min, double t_max) { return k.t_out >= t_min && k.t_in <= t_max; }
 
-/// The events' heap order: the earliest on top, and at equal t entries first.
-/// (A function object, not a function: through a pointer the heap's calls were not inlined.)
+/// The events' order: the events wait sorted by it, latest first, so that
+/// the next is at the back; at equal t entries come first (an object, not
+/// a function, so that std::sort inlines it).
 constexpr auto later = [](const BlobScratch::Event& a, const BlobScratch::Event& b) {
     return a.t > b.t || (a.t == b.t && a.kind > b.kind);
 };
@@ -418,16 +418,10 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
     bool started = false;   // whether the start was checked
     std::optional<double> hit;
     bool failed = false;
-    // The events wait in a heap, earliest on top — or, when every one is
-    // gathered before the first is taken (`Sorted`: std::true_type), sorted
-    // latest first and taken from the back, without the heap's moves.
-    const auto advance = [&]<class Sorted = std::false_type>(double frontier, Sorted = {}) {
-        const auto next_event = [&]() -> const BlobScratch::Event& {
-            if constexpr (Sorted::value) return s.events.back();
-            return s.events.front();
-        };
-        while (!s.events.empty() && next_event().t < frontier) {
-            const BlobScratch::Event e = next_event();
+    // The events wait sorted latest first: the next is at the back.
+    const auto advance = [&](double frontier) {
+        while (!s.events.empty() && s.events.back().t < frontier) {
+            const BlobScratch::Event e = s.events.back();
             if (e.t > done) {
                 // Every component at t0 is in: is the ray inside already? (Not
                 // asked of the quadratic pieces, which are the ray's own: see
@@ -466,7 +460,6 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
                 }
                 done = e.t;
             }
-            if constexpr (!Sorted::value) std::pop_heap(s.events.begin(), s.events.end(), later);
             s.events.pop_back();
             apply(e, s);
         }
@@ -480,22 +473,27 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
                 if (!meets(k, span.t0, span.t1)) return;
                 const std::size_t before = s.events.size();
                 add_events(k, span.t0, span.t1, s);
-                for (std::size_t j = before; j < s.events.size(); ++j)
-                    std::push_heap(s.events.begin(), s.events.begin() + static_cast<std::ptrdiff_t>(j) + 1, later);
+                // Each into its place: few moves, as the pending events are few
+                // and a new entry is mostly among the earliest of them.
+                for (std::size_t j = before; j < s.events.size(); ++j) {
+                    const BlobScratch::Event e = s.events[j];
+                    std::size_t at = j;
+                    for (; at > 0 && later(e, s.events[at - 1]); --at) s.events[at] = s.events[at - 1];
+                    s.events[at] = e;
+                }
             },
             beside_checked);
     };
     // Most shadow rays are not blocked and meet every component on their
     // way: through a small blob they gather them all and skip the ordered
-    // walk's queue and the events' heap, as every ray through a blob of a
-    // few does.
+    // walk's queue, as every ray through a blob of a few does.
     const bool gathered = components_.size() <= few_components ||
                           (query == Query::Any && components_.size() <= small_for_shadows);
     const BlobScratch::TileList* list =
         !gathered && scratch.camera_frustum ? tile_list(ray, *scratch.camera_frustum, s) : nullptr;
     if (gathered) {
         gather(sizes, span.t0, span.t1, s);
-        advance(std::numeric_limits<double>::infinity(), std::true_type{});
+        advance(std::numeric_limits<double>::infinity());
     } else if (list) {
         ++scratch.counters.blob_list_rays;
         // The ray leaves the eye: a component no nearer it than `nearest`
@@ -508,7 +506,7 @@ std::optional<double> Blob::search(const Ray& ray, Span span, Query query, BlobS
             if (enters > span.t1) break;
             const double along = dot(e.from_center, ray.dir), bound = e.beside * sizes.dir_square;
             if (beside_tested && along * along < bound && well_scaled(bound)) continue;  // passes beside its reach
-            if (!s.events.empty() && s.events.front().t < enters && !(going = advance(enters))) break;
+            if (!s.events.empty() && s.events.back().t < enters && !(going = advance(enters))) break;
             meet(e.component, true);
         }
         if (going) advance(std::numeric_limits<double>::infinity());

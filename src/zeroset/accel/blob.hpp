@@ -207,8 +207,9 @@ private:
     /// ray, the kernel of a distance to a point or to the axis line).
     /// (`beside_checked`: the caller has already found that the ray does not
     /// pass a round component beside its reach.)
+    /// (Inline, defined in blob.cpp, its only user.)
     template <class Add>
-    void on_ray(const RaySizes& ray, std::uint32_t i, Add&& add, bool beside_checked = false) const;
+    inline void on_ray(const RaySizes& ray, std::uint32_t i, Add&& add, bool beside_checked = false) const;
     /// Whether the ray passes farther than `radius` from `point` (whose
     /// largest |coordinate| is given) by a margin far wider than the
     /// rounding of the exact test: a cheap rejection in the blob's own space

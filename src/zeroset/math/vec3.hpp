@@ -51,12 +51,13 @@ template <class T> Vec3<T> abs_components(const Vec3<T>& a) {
     return {abs(a.x), abs(a.y), abs(a.z)};
 }
 
-/// The largest |coordinate| of a (for plain numbers): the scale of a point.
 /// |x| + |y| + |z|: at least the length, without a square root.
 template <class T> T norm1(const Vec3<T>& a) {
     using std::abs;
     return abs(a.x) + abs(a.y) + abs(a.z);
 }
+
+/// The largest |coordinate| of a (for plain numbers): the scale of a point.
 template <class T> T max_abs(const Vec3<T>& a) {
     using std::abs;
     const T x = abs(a.x), y = abs(a.y), z = abs(a.z);
