@@ -8,6 +8,7 @@
 #include <limits>
 #include <span>
 
+#include "zeroset/math/scalar.hpp"
 #include "zeroset/roots/bernstein.hpp"
 #include "zeroset/roots/polynomial_enclosure.hpp"
 
@@ -15,7 +16,6 @@ namespace zeroset {
 
 namespace {
 
-constexpr double unit_roundoff = std::numeric_limits<double>::epsilon() / 2.0;
 constexpr int max_size = PolynomialTileProof::max_degree + 1;
 /// What the samples' directions may be off by, in roundings of their
 /// magnitude (7 and room; see proves_outside).

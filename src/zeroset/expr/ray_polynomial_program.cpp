@@ -9,12 +9,12 @@
 #include <utility>
 
 #include "zeroset/expr/op.hpp"
+#include "zeroset/math/scalar.hpp"
 
 namespace zeroset {
 
 namespace {
 
-constexpr double unit_roundoff = std::numeric_limits<double>::epsilon() / 2.0;
 /// A rounding count standing for "no bound".
 constexpr int unknown_roundings = std::numeric_limits<int>::max() / 4;
 /// libm's functions on an exact constant: within 2 ulp, i.e. 4 roundings.

@@ -13,6 +13,10 @@
 
 namespace zeroset {
 
+/// u = ε/2, the unit roundoff of doubles (Higham §2.2): the unit of every
+/// rounding-error bound.
+inline constexpr double unit_roundoff = std::numeric_limits<double>::epsilon() / 2.0;
+
 template <std::floating_point F> inline F square(F a) { return a * a; }
 template <std::floating_point F> inline F sqrt(F a) { return std::sqrt(a); }
 template <std::floating_point F> inline F abs(F a) { return std::fabs(a); }

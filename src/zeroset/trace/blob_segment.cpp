@@ -20,7 +20,6 @@ namespace zeroset {
 
 namespace {
 
-constexpr double unit_roundoff = std::numeric_limits<double>::epsilon() / 2.0;
 
 /// γ_k = k·u / (1 − k·u) (Higham §3.1).
 double gamma(int k) { return k * unit_roundoff / (1.0 - k * unit_roundoff); }

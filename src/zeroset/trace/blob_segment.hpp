@@ -35,6 +35,7 @@
 #include "zeroset/expr/blob_model.hpp"
 #include "zeroset/math/box3.hpp"
 #include "zeroset/math/interval.hpp"
+#include "zeroset/math/scalar.hpp"
 #include "zeroset/roots/root_function.hpp"
 #include "zeroset/trace/root_finder.hpp"
 
@@ -158,11 +159,10 @@ inline double kernel_upper_bound_at(const BlobSegmentSettings& settings, const K
     // u − 2c·√u ≥ u − c·(u + 1), as 2√u ≤ u + 1; c is tiny, so the bound
     // is as tight. The factors of 1 ± units cover u's own rounding and this
     // line's. (The sums of |coordinates| bound lengths the same way.)
-    constexpr double unit = std::numeric_limits<double>::epsilon() / 2.0;
-    const double c = 1.7321 * (k.q0_error + std::abs(t) * k.qd_error + 4.0 * unit * (norm1(k.q0) + std::abs(t) * norm1(k.qd)));
+    const double c = 1.7321 * (k.q0_error + std::abs(t) * k.qd_error + 4.0 * unit_roundoff * (norm1(k.q0) + std::abs(t) * norm1(k.qd)));
     const double shortest_square =
-        std::max(0.0, (u * (1.0 - 8.0 * unit) - c * (u + 1.0) * (1.0 + 4.0 * unit)) * (1.0 - 4.0 * unit));
-    return k.strength * kernel_value_at(settings.kernel, shortest_square, k.blobbiness) * (1.0 + 4.0 * unit);
+        std::max(0.0, (u * (1.0 - 8.0 * unit_roundoff) - c * (u + 1.0) * (1.0 + 4.0 * unit_roundoff)) * (1.0 - 4.0 * unit_roundoff));
+    return k.strength * kernel_value_at(settings.kernel, shortest_square, k.blobbiness) * (1.0 + 4.0 * unit_roundoff);
 }
 /// The same over [ta, tb], from the component's nearest approach there.
 inline double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay& k, double ta, double tb) {
