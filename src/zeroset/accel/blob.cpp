@@ -67,7 +67,7 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)), 
                                         ": the quadratic pieces are for round components, not cylinders");
         const Vec3d end = c.end.value_or(c.center), axis = end - c.center;
         components_.push_back({static_cast<std::uint32_t>(i), sphere, c.is_cylinder(), reach, c.strength, c.blobbiness,
-                               c.center, 1.0 / c.radius, end, axis, dot(axis, axis), length(axis), length(c.center),
+                               c.center, 1.0 / c.radius, c.radius * c.radius, end, axis, dot(axis, axis), length(axis), length(c.center),
                                max_abs(c.center), max_abs(end), c.radius * std::sqrt(reach)});
         boxes.push_back(m.reach_box(i, reach));
         if (!is_bounded(boxes.back()) || !std::isfinite(boxes.back().diagonal()))
@@ -165,7 +165,12 @@ template <class Add>
     const Span everywhere{-infinity, infinity};
     if (c.sphere) {
         if (!beside_checked && passes_beside(sizes, c.center, c.center_largest, c.reach_length)) return;
-        if (const auto k = part_on_ray(c, about_point(sizes, c, c.center, c.center_largest), everywhere)) add(*k);
+        const MappedRay q = about_point(sizes, c, c.center, c.center_largest);
+        // 1/|d|² is NaN where |d|² is badly scaled (and R² may underflow): there the division.
+        const double inverse_a2 = sizes.inverse_dir_square * c.radius_square;
+        const NearestApproach approach =
+            std::isnormal(inverse_a2) ? nearest_approach(q.q0, q.qd, inverse_a2) : nearest_approach(q.q0, q.qd);
+        if (const auto k = part_on_ray(c, q, everywhere, approach)) add(*k);
         return;
     }
     if (!c.cylinder) {
@@ -248,7 +253,7 @@ bool Blob::passes_beside_axis(const Ray& ray, double origin_length, double dir_l
 std::optional<Span> Blob::tube_on_ray(const MappedRay& across, double reach, const NearestApproach& approach) {
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const Span undecided{-infinity, infinity};
-    const auto [a2, nearest, u_min] = approach;
+    const auto [a2, nearest, u_min, inverse_a2] = approach;
     if (!(a2 > 0.0)) return undecided;  // along the axis (or NaN)
     // The radius, wider by the coordinates' errors (twice over) at any t the
     // span can reach — within twice the plain radius's half-width of the
@@ -261,7 +266,7 @@ std::optional<Span> Blob::tube_on_ray(const MappedRay& across, double reach, con
     if (!(error <= 0.5 * plain)) return undecided;  // the widening would pass the t it was worked out for
     const double radius = plain + 2.0 * error;
     if (u_min > radius * radius) return std::nullopt;
-    const double half = std::sqrt((radius * radius - u_min) / a2) * (1.0 + 1e-9) + 1e-9 * std::abs(nearest);
+    const double half = std::sqrt((radius * radius - u_min) * inverse_a2) * (1.0 + 1e-9) + 1e-9 * std::abs(nearest);
     if (!(half >= 0.0) || !std::isfinite(nearest)) return undecided;  // NaN, or overflow
     return Span{nearest - half, nearest + half};
 }

@@ -276,8 +276,15 @@ template <class Test>
 [[gnu::always_inline]] inline void Bvh::walk(const Ray& ray, double t_min, double t_max, Visitor visit,
                                              void* context) const {
     if (order_.empty()) return;
-    const auto root_span = root_box_.clip(ray, t_min, t_max);
-    if (!root_span) return;
+    // A root node's own slab test finds its children: the root box, their
+    // union, would only repeat it (with three divisions of its own). A
+    // root leaf has no other test.
+    double root_t = t_min;
+    if (root_.count > 0) {
+        const auto root_span = root_box_.clip(ray, t_min, t_max);
+        if (!root_span) return;
+        root_t = root_span->t0;
+    }
     const auto inverse = [](double d) { return d != 0.0 ? 1.0 / d : std::copysign(1e300, d); };
     const RayInverse r{ray.origin, {inverse(ray.dir.x), inverse(ray.dir.y), inverse(ray.dir.z)}};
     // The nodes still to open and their entry t, in two arrays rather than
@@ -291,7 +298,7 @@ template <class Test>
     std::array<double, capacity> pending_t;
     std::size_t size = 0;
     pending[size] = root_;
-    pending_t[size++] = root_span->t0;
+    pending_t[size++] = root_t;
     while (size > 0) {
         --size;
         if (pending_t[size] > t_max) continue;

@@ -46,8 +46,10 @@ struct Box3 {
             if (a > b) std::swap(a, b);
             t0 = std::max(t0, a);
             t1 = std::min(t1, b);
-            if (t0 > t1) return std::nullopt;
         }
+        // Tested once, not per axis: the span only narrows, and the three
+        // axes' divisions overlap without a branch between them.
+        if (t0 > t1) return std::nullopt;
         return Span{t0, t1};
     }
 };
