@@ -184,6 +184,7 @@ private:
         // Fixed for every ray: a cylinder's axis and the sizes its mapping error is made of.
         Vec3d axis;           // end − center
         double axis_square;   // |axis|²
+        double inverse_axis_square;  // 1/|axis|² (∞ for a sphere's zero axis)
         double axis_length;
         double center_length;
         double center_largest;  // the largest |coordinate| of center, and of end
