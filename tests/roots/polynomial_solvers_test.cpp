@@ -178,6 +178,26 @@ TEST(PolynomialSolvers, NegligibleTermsAreWeighedSafelyOverTheRange) {
     for (int k = 0; k < 10; ++k) EXPECT_NEAR(out[static_cast<std::size_t>(k)], k + 1.0, 1e-9);
 }
 
+// A remainder that is small beside the dividend but exact — nothing
+// cancelled to make it — is no rounding residue: t² − 10⁻¹³'s Sturm
+// remainder is −10⁻¹³, and taking it for 0 (a test by the dividend's size
+// alone) lost the root. Each solver finds it, and a double root whose
+// remainder is cancellation's residue still counts once.
+TEST(PolynomialSolvers, SmallExactRemaindersAreNotTakenForZero) {
+    for (const Solver& s : solvers()) {
+        if (!s.guaranteed) continue;
+        SCOPED_TRACE(s.name);
+        for (const double c : {1e-13, 1e-20, 1e-40}) {
+            SCOPED_TRACE(c);
+            const std::vector<double> got = solve(s, {-c, 0.0, 1.0}, 0.0, 1.0);
+            ASSERT_EQ(got.size(), 1u);
+            EXPECT_LE(std::abs(got[0] - std::sqrt(c)) / std::sqrt(c), 1e-9);
+        }
+        // (t − 0.1)², its coefficients rounded: one root.
+        expect_roots(solve(s, from_roots({0.1, 0.1}), 0.0, 1.0), {0.1}, 1e-7);
+    }
+}
+
 TEST(PolynomialSolvers, RootsAtTheEndsOfTheRange) {
     const std::vector<double> roots{0.25, 0.5, 1.0};
     for (const Solver& s : solvers()) {

@@ -14,7 +14,12 @@ namespace {
 
 /// The Sturm sequence of one polynomial, each member after p itself scaled
 /// to a largest coefficient of 1 (only signs matter, and this keeps them in
-/// range; p is kept exact, so its zeros are).
+/// range; p is kept exact, so its zeros are). Beside each member's
+/// coefficients runs their magnitude: the same divisions on absolute values
+/// (Higham's running error bound), so that a remainder coefficient is taken
+/// for 0 only where it is small beside what cancelled to make it — not
+/// where it is merely small beside the dividend (t² − 10⁻¹³'s remainder
+/// −10⁻¹³ is exact, and its root 3.2·10⁻⁷ real).
 class SturmSequence {
 public:
     /// For c of degree n, counted on t with |t| ≤ reach.
@@ -25,6 +30,8 @@ public:
         auto& p1 = members_[1];
         for (int i = 0; i < n; ++i) p1[at(i)] = static_cast<double>(i + 1) * p0[at(i + 1)];
         degrees_[1] = n - 1;
+        for (int k = 0; k < 2; ++k)
+            for (int i = 0; i <= degrees_[at(k)]; ++i) magnitudes_[at(k)][at(i)] = std::abs(members_[at(k)][at(i)]);
         drop_negligible_leading_terms(1);
         normalize(1);
         size_ = 2;
@@ -65,9 +72,8 @@ private:
     /// the one before (of p, for p′): a change far below its largest term
     /// over the range moves those signs only where the member is itself at
     /// rounding level. p itself is kept whole. Ranges within [−1, 1] are
-    /// weighted as [−1, 1], like the remainders' zero test (an unweighted
-    /// one): weighting them by their own small reach dropped terms that
-    /// decide a root near 0.
+    /// weighted as [−1, 1]: weighting them by their own small reach dropped
+    /// terms that decide a root near 0.
     void drop_negligible_leading_terms(int k) {
         auto& m = members_[at(k)];
         int& degree = degrees_[at(k)];
@@ -83,27 +89,38 @@ private:
     }
     void normalize(int k) {
         const double m = largest(k);
-        for (int i = 0; i <= degrees_[at(k)]; ++i) members_[at(k)][at(i)] /= m;
+        for (int i = 0; i <= degrees_[at(k)]; ++i) {
+            members_[at(k)][at(i)] /= m;
+            magnitudes_[at(k)][at(i)] /= m;
+        }
     }
     /// Appends −(p_{k−1} mod p_k); false when that remainder is (numerically) 0.
     bool append_remainder() {
         const int k = size_ - 1;
         const auto& b = members_[at(k)];
+        const auto& b_magnitude = magnitudes_[at(k)];
         const int db = degrees_[at(k)];
         PolynomialScratch r = members_[at(k - 1)];
-        double largest_quotient = 0.0;
+        PolynomialScratch r_magnitude = magnitudes_[at(k - 1)];
         for (int i = degrees_[at(k - 1)]; i >= db; --i) {
             const double q = r[at(i)] / b[at(db)];
-            largest_quotient = std::max(largest_quotient, std::abs(q));
-            for (int j = 0; j <= db; ++j) r[at(i - db + j)] -= q * b[at(j)];
+            for (int j = 0; j <= db; ++j) {
+                r[at(i - db + j)] -= q * b[at(j)];
+                r_magnitude[at(i - db + j)] += std::abs(q) * b_magnitude[at(j)];
+            }
         }
-        // The divisor's largest coefficient is 1: the division's scale.
-        const double zero = sturm_zero_tolerance * (largest(k - 1) + largest_quotient);
+        // A coefficient within the tolerance of its own magnitude is
+        // cancellation's residue: 0 (all of them: the gcd is reached).
+        const auto is_zero = [&](int i) { return std::abs(r[at(i)]) <= sturm_zero_tolerance * r_magnitude[at(i)]; };
         int dr = db - 1;
-        while (dr >= 0 && std::abs(r[at(dr)]) <= zero) --dr;
+        while (dr >= 0 && is_zero(dr)) --dr;
         if (dr < 0) return false;
         auto& next = members_[at(size_)];
-        for (int i = 0; i <= dr; ++i) next[at(i)] = -r[at(i)];
+        auto& next_magnitude = magnitudes_[at(size_)];
+        for (int i = 0; i <= dr; ++i) {
+            next[at(i)] = -r[at(i)];
+            next_magnitude[at(i)] = r_magnitude[at(i)];
+        }
         degrees_[at(size_)] = dr;
         drop_negligible_leading_terms(size_);
         normalize(size_);
@@ -112,6 +129,7 @@ private:
     }
 
     std::array<PolynomialScratch, max_polynomial_degree + 1> members_{};
+    std::array<PolynomialScratch, max_polynomial_degree + 1> magnitudes_{};  // each ≥ |its member|
     std::array<int, max_polynomial_degree + 1> degrees_{};
     int size_ = 0;
     double reach_;
