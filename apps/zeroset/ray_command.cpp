@@ -29,7 +29,8 @@ constexpr const char* ray_usage = R"usage(Usage: zeroset ray [SCENE] [options]
 Casts one ray r(t) = origin + t*dir through one object of SCENE and asks every
 intersection method for the first hit and for all hits in the span [t0, t1]
 where the ray is inside the object's bounds (from t = 0), shrunk by interval
-analysis to where the surface can be. For each method it
+analysis to where the surface can be (a plane without bounds: a box about
+where the ray meets it, see docs/ray-command.md). For each method it
 prints the hits, the function evaluations each query spent and how it ended:
 ok, no hit, failed (the method gave up, or is not available: the message is
 shown) or diverged (Newton's iterates ran away).

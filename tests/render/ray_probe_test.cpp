@@ -34,5 +34,42 @@ object "cap" {
     EXPECT_LT(along_x.span->t1, 20.6);
 }
 
+// A plane without bounds (the renderer's half-space) is probed about where
+// the ray meets it: every method finds that hit, a ray from inside hits at
+// its start, one that never meets the plane has no span, and a curved
+// surface without bounds is refused as the renderer refuses it.
+TEST(RayProbe, APlaneWithoutBoundsIsProbedWhereTheRayMeetsIt) {
+    const Scene scene = parse_scene(R"(
+object "floor" {
+  surface y + 1
+  bounds none
+}
+object "bowl" {
+  surface y - x^2
+  bounds none
+}
+)",
+                                    "probe.zs", ".");
+    const ObjectProbe probe(placed_objects(scene).at(0), std::nullopt);
+    const std::array<Method, 4> methods{Method::Interval, Method::Lg, Method::Sphere, Method::Polynomial};
+    const RayProbe down = probe.probe(Ray{{0.0, 2.0, 0.0}, {0.0, -1.0, 0.1}}, methods);
+    ASSERT_TRUE(down.span);
+    EXPECT_TRUE(down.unbounded);
+    for (const MethodOutcome& o : down.methods) {
+        SCOPED_TRACE(method_label(o));
+        ASSERT_TRUE(o.first_hit);
+        EXPECT_NEAR(*o.first_hit, 3.0, 1e-9);
+        ASSERT_EQ(o.hits.size(), 1u);
+    }
+    const RayProbe inside = probe.probe(Ray{{0.0, -2.0, 0.0}, {0.0, -1.0, 0.0}}, methods);
+    ASSERT_TRUE(inside.span);
+    for (const MethodOutcome& o : inside.methods) EXPECT_EQ(o.first_hit, std::optional<double>(0.0)) << method_label(o);
+    const RayProbe away = probe.probe(Ray{{0.0, 2.0, 0.0}, {0.0, 1.0, 0.0}}, methods);
+    EXPECT_FALSE(away.span);
+    const RayProbe along = probe.probe(Ray{{0.0, 2.0, 0.0}, {1.0, 0.0, 0.0}}, methods);
+    EXPECT_FALSE(along.span);
+    EXPECT_THROW(ObjectProbe(placed_objects(scene).at(1), std::nullopt), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace zeroset

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "zeroset/accel/half_space.hpp"
 #include "zeroset/expr/tape.hpp"
 #include "zeroset/scene/scene.hpp"
 #include "zeroset/trace/root_finder.hpp"
@@ -46,6 +47,9 @@ struct RayProbe {
     std::optional<Span> span;  // the ray in the search region, from t = 0; none when it misses it
     std::vector<MethodOutcome> methods;
     bool misses_gate = false;  // the object has a gate (Object::gate) and the ray misses it: no span
+    /// The object has no bounds (a plane, a half-space): the span is the ray
+    /// in a box about where it meets the plane (ObjectProbe::probe).
+    bool unbounded = false;
 };
 
 /// Runs every method of `methods` on the ray: a fresh RootFinder for each
@@ -60,7 +64,10 @@ RayProbe probe_ray(const Tape& tape, const SearchRegion& region, const Ray& ray,
 
 /// A placed object of a scene made ready for probing rays given in the
 /// scene's space: its tape, its search region, and root-finder settings for
-/// its size (with Newton's start when one is asked for).
+/// its size (with Newton's start when one is asked for). An object without
+/// bounds — a plane, which the renderer traces in closed form (HalfSpace) —
+/// is probed in a box about where each ray meets it, from the ray's origin
+/// on: the methods then run as they would on the plane cut to that box.
 class ObjectProbe {
 public:
     ObjectProbe(const PlacedObject& placed, std::optional<double> newton_from);
@@ -68,9 +75,13 @@ public:
     [[nodiscard]] const Tape& tape() const { return tape_; }
 
 private:
+    /// A plane's probe: the box about the ray's meeting with it, per ray.
+    [[nodiscard]] RayProbe probe_plane(const Ray& ray, std::span<const Method> methods) const;
+
     PlacedObject placed_;
     Tape tape_;
-    SearchRegion region_;
+    std::optional<HalfSpace> plane_;     // when the object has no bounds
+    std::optional<SearchRegion> region_;  // when it has
     RootFinderSettings settings_;
 };
 

@@ -49,9 +49,12 @@ std::string ray_report_text(const RaySubject& subject, const RayProbe& probe) {
     out += "dir      " + vector_text(probe.ray.dir) + "   (used as given: |dir| = " + number(length(probe.ray.dir)) + ")\n";
     if (probe.span)
         out += "span     t0 = " + number(probe.span->t0) + ", t1 = " + number(probe.span->t1) +
-               "   (the ray inside the object's bounds, shrunk to its surface; from t = 0)\n";
+               (probe.unbounded ? "   (no bounds: the ray in a box about where it meets the plane, shrunk to its surface; from t = 0)\n"
+                                : "   (the ray inside the object's bounds, shrunk to its surface; from t = 0)\n");
     else if (probe.misses_gate)
         out += "span     none: the ray misses the object's gate\n";
+    else if (probe.unbounded)
+        out += "span     none: the ray does not meet the plane (the object has no bounds)\n";
     else
         out += "span     none: the ray misses the object's bounds (shrunk to its surface)\n";
     if (subject.newton_from) out += "newton   starts at t = " + number(*subject.newton_from) + "\n";
