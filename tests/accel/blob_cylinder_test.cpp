@@ -218,5 +218,25 @@ TEST(Blob, TheAxisTestKeepsRaysGrazingTheReachAtAnyScale) {
     EXPECT_GT(ordinary_rejected, 5000);
 }
 
+// An axis so short that 1/|w|² overflows (|w|² below 2⁻¹⁰²⁴) is divided
+// by, not multiplied by its inverse: ∞ made the ray's place along it NaN
+// and dropped every part (found in review). The component is then a ball.
+TEST(Blob, ACylinderWithAVanishingAxisStillCounts) {
+    BlobComponent c;
+    c.center = {0, 0, 0};
+    c.end = Vec3d{1e-155, 0, 0};
+    c.radius = 1.0;
+    const auto model = std::make_shared<const BlobModel>(BlobKernel::PovRay, 0.5, std::vector{c});
+    const Blob blob(BlobDescription{"dot", model, no_material, 1e-9, 1});
+    TraceScratch scratch(1);
+    const double d2 = 1.0 - std::sqrt(0.5);  // (1 − d²)² = 1/2
+    for (const Vec3d& dir : {Vec3d{1, 0, 0}, Vec3d{1, 1e-3, 0}, Vec3d{1, 0, 1e-3}}) {
+        const Ray ray{{-5, 0.1, 0}, dir};
+        const auto hit = blob.first_hit(ray, 0.0, 1e9, scratch);
+        ASSERT_TRUE(hit) << dir.y << " " << dir.z;
+        EXPECT_NEAR(dot(ray.at(hit->t), ray.at(hit->t)), d2, 1e-9);
+    }
+}
+
 }  // namespace
 }  // namespace zeroset

@@ -198,6 +198,34 @@ TEST(PolynomialSolvers, SmallExactRemaindersAreNotTakenForZero) {
     }
 }
 
+// The other side of that test: a remainder coefficient's running magnitude
+// grows faster than the members from one division to the next, so by the
+// fourth or fifth remainder a real one lies within the tolerance of it. Taken
+// for 0 by the magnitude alone, these lost roots (found in review, the roots
+// checked with mpmath): a quintic's only real root beside two complex pairs,
+// a septic's first root, and two of four roots 10⁻⁴ apart.
+TEST(PolynomialSolvers, RealRemaindersAreNotTakenForZeroLateInTheSequence) {
+    const std::vector<double> quintic{-0.028910686951351777, 0.29343767180386549, -1.1917585306299552,
+                                      2.4209239096303903,    -2.4597440793154139, 1.0};
+    const std::vector<double> septic{-0.0232089571195233, 0.289092110800718, -1.52501839410201, 4.41363092000654,
+                                     -7.56414298096366,   7.67229392491531,  -4.26232373537651, 1.0};
+    const std::vector<double> cluster{0.0081028825620291754, -0.10802886343581351, 0.54009633749077435,
+                                      -1.2001071816834064, 1.0};
+    // Near complex pairs and in the cluster, double rounding of p moves the
+    // roots by ~10⁻⁸: they are resolved to that. Descartes reports a cluster
+    // it cannot split as one root; Sturm counts the four.
+    for (const Solver& s : solvers()) {
+        if (!s.guaranteed) continue;
+        SCOPED_TRACE(s.name);
+        expect_roots(solve(s, quintic, 0.0, 1.0), {0.495682602016177}, 1e-7);
+        expect_roots(solve(s, septic, 0.0, 1.5), {0.440228763634143, 0.562371906175788, 0.947490108606517}, 1e-7);
+    }
+    std::array<double, max_polynomial_degree> out{};
+    const PolynomialRoots r = sturm_roots(cluster, 0.0, 1.5, out);
+    expect_roots({out.begin(), out.begin() + r.count},
+                 {0.299728774372998, 0.299837538489226, 0.300177402502325, 0.300363466318858}, 1e-6);
+}
+
 TEST(PolynomialSolvers, RootsAtTheEndsOfTheRange) {
     const std::vector<double> roots{0.25, 0.5, 1.0};
     for (const Solver& s : solvers()) {

@@ -16,6 +16,10 @@ namespace zeroset {
 namespace {
 
 constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
+/// x where it is a normal number (full precision), else 0: a product with
+/// it is then 0, which the one user takes for "not known" (Blob::on_ray).
+double normal_or_zero(double x) { return std::isnormal(x) ? x : 0.0; }
+
 // A blob of this many components or fewer (one BVH leaf) meets them all
 // without the tree's walk.
 constexpr std::size_t few_components = 4;
@@ -67,7 +71,7 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)), 
                                         ": the quadratic pieces are for round components, not cylinders");
         const Vec3d end = c.end.value_or(c.center), axis = end - c.center;
         components_.push_back({static_cast<std::uint32_t>(i), sphere, c.is_cylinder(), reach, c.strength, c.blobbiness,
-                               c.center, 1.0 / c.radius, c.radius * c.radius, end, axis, dot(axis, axis),
+                               c.center, 1.0 / c.radius, normal_or_zero(c.radius * c.radius), end, axis, dot(axis, axis),
                                1.0 / dot(axis, axis), length(axis), length(c.center),
                                max_abs(c.center), max_abs(end), c.radius * std::sqrt(reach)});
         boxes.push_back(m.reach_box(i, reach));
@@ -167,7 +171,8 @@ template <class Add>
     if (c.sphere) {
         if (!beside_checked && passes_beside(sizes, c.center, c.center_largest, c.reach_length)) return;
         const MappedRay q = about_point(sizes, c, c.center, c.center_largest);
-        // 1/|d|² is NaN where |d|² is badly scaled (and R² may underflow): there the division.
+        // 1/|d|² is NaN where |d|² is badly scaled, and R² is 0 where it is not
+        // a normal number: there the division.
         const double inverse_a2 = sizes.inverse_dir_square * c.radius_square;
         const NearestApproach approach =
             std::isnormal(inverse_a2) ? nearest_approach(q.q0, q.qd, inverse_a2) : nearest_approach(q.q0, q.qd);
@@ -191,8 +196,11 @@ template <class Add>
     const Vec3d& w = c.axis;
     const Vec3d offset = ray.origin - c.center;
     // Multiplied by 1/|w|², not divided: a unit more of rounding, within the
-    // margins below, and two divisions fewer on every ray that meets it.
-    const double s0 = dot(offset, w) * c.inverse_axis_square, sd = dot(ray.dir, w) * c.inverse_axis_square;
+    // margins below, and two divisions fewer on every ray that meets it
+    // (divided where 1/|w|² overflows, |w|² below 2⁻¹⁰²⁴: ∞ would make s NaN).
+    const bool inverse_finite = c.inverse_axis_square < infinity;
+    const double s0 = inverse_finite ? dot(offset, w) * c.inverse_axis_square : dot(offset, w) / c.axis_square;
+    const double sd = inverse_finite ? dot(ray.dir, w) * c.inverse_axis_square : dot(ray.dir, w) / c.axis_square;
     Span start = everywhere, body = everywhere, finish = everywhere;  // where s ≤ 0, 0 ≤ s ≤ 1, s ≥ 1
     if (sd != 0.0) {
         // One division for both ends (two where 1/sd overflows: ∞·0 is NaN).

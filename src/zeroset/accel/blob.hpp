@@ -179,7 +179,7 @@ private:
         double blobbiness;
         Vec3d center;
         double inverse_radius;
-        double radius_square;  // R²: a sphere's 1/|q_d|² is R²/|d|²
+        double radius_square;  // R² (0 where not a normal number): a sphere's 1/|q_d|² is R²/|d|²
         Vec3d end;            // a cylinder's
         // Fixed for every ray: a cylinder's axis and the sizes its mapping error is made of.
         Vec3d axis;           // end − center

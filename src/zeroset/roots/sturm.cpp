@@ -17,7 +17,7 @@ namespace {
 /// range; p is kept exact, so its zeros are). Beside each member's
 /// coefficients runs their magnitude: the same divisions on absolute values
 /// (Higham's running error bound), so that a remainder coefficient is taken
-/// for 0 only where it is small beside what cancelled to make it — not
+/// for 0 only where it is also small beside what cancelled to make it — not
 /// where it is merely small beside the dividend (t² − 10⁻¹³'s remainder
 /// −10⁻¹³ is exact, and its root 3.2·10⁻⁷ real).
 class SturmSequence {
@@ -102,16 +102,26 @@ private:
         const int db = degrees_[at(k)];
         PolynomialScratch r = members_[at(k - 1)];
         PolynomialScratch r_magnitude = magnitudes_[at(k - 1)];
+        double largest_quotient = 0.0;
         for (int i = degrees_[at(k - 1)]; i >= db; --i) {
             const double q = r[at(i)] / b[at(db)];
+            largest_quotient = std::max(largest_quotient, std::abs(q));
             for (int j = 0; j <= db; ++j) {
                 r[at(i - db + j)] -= q * b[at(j)];
                 r_magnitude[at(i - db + j)] += std::abs(q) * b_magnitude[at(j)];
             }
         }
-        // A coefficient within the tolerance of its own magnitude is
-        // cancellation's residue: 0 (all of them: the gcd is reached).
-        const auto is_zero = [&](int i) { return std::abs(r[at(i)]) <= sturm_zero_tolerance * r_magnitude[at(i)]; };
+        // A coefficient is 0 where it is within the tolerance both of the
+        // division's scale (the divisor's largest coefficient is 1) and of
+        // its own magnitude — what cancelled to make it. The scale alone took
+        // exact small remainders for 0; the magnitude alone, which grows
+        // faster than the members from one division to the next, took real
+        // ones for 0 a few members on and ended the sequence early (a quintic
+        // lost its only real root).
+        const double scale = largest(k - 1) + largest_quotient;
+        const auto is_zero = [&](int i) {
+            return std::abs(r[at(i)]) <= sturm_zero_tolerance * std::min(scale, r_magnitude[at(i)]);
+        };
         int dr = db - 1;
         while (dr >= 0 && is_zero(dr)) --dr;
         if (dr < 0) return false;

@@ -9,12 +9,12 @@
 // In floating point a remainder is only known to within rounding. Each
 // member carries a running bound on its coefficients' size before
 // cancellation (the divisions redone on absolute values); a remainder
-// coefficient below sturm_zero_tolerance times its own bound is
-// cancellation's residue, and a remainder made of such is taken as 0, so the
-// sequence ends at the (numerical) gcd and multiple roots count once. A
-// remainder that is merely small, with nothing cancelled (t² − 10⁻¹³'s
-// −10⁻¹³), stays. Roots closer together than that resolution (about 1e-7
-// relative) may count as one. A member's leading terms that are
+// coefficient below sturm_zero_tolerance times both the division's size and
+// its own bound is cancellation's residue, and a remainder made of such is
+// taken as 0, so the sequence ends at the (numerical) gcd and multiple roots
+// count once. A remainder that is merely small, with nothing cancelled
+// (t² − 10⁻¹³'s −10⁻¹³), stays. Roots closer together than that resolution
+// (about 1e-7 relative) may count as one. A member's leading terms that are
 // negligible over the range (cancellation's residue of terms that are 0 in
 // exact arithmetic, as in a swept sphere's P) are dropped before it divides:
 // dividing by one gave quotients so large that the remainders were noise,
@@ -27,7 +27,7 @@
 
 namespace zeroset {
 
-/// A remainder coefficient below this times the size of what cancelled to make it is 0.
+/// A remainder coefficient below this times the division's size and the size of what cancelled to make it is 0.
 inline constexpr double sturm_zero_tolerance = 1e-13;
 /// A member's leading term below this times its largest term over the range
 /// counted is dropped before the next division (rounding residue; dividing by
