@@ -196,18 +196,14 @@ template <class Add>
     const Vec3d& w = c.axis;
     const Vec3d offset = ray.origin - c.center;
     // Multiplied by 1/|w|², not divided: a unit more of rounding, within the
-    // margins below, and two divisions fewer on every ray that meets it
-    // (divided where 1/|w|² overflows, |w|² below 2⁻¹⁰²⁴: ∞ would make s NaN).
-    const bool inverse_finite = c.inverse_axis_square < infinity;
-    const double s0 = inverse_finite ? dot(offset, w) * c.inverse_axis_square : dot(offset, w) / c.axis_square;
-    const double sd = inverse_finite ? dot(ray.dir, w) * c.inverse_axis_square : dot(ray.dir, w) / c.axis_square;
+    // margins below, and two divisions fewer on every ray that meets it.
+    const double s0 = times_inverse(dot(offset, w), c.axis_square, c.inverse_axis_square);
+    const double sd = times_inverse(dot(ray.dir, w), c.axis_square, c.inverse_axis_square);
     Span start = everywhere, body = everywhere, finish = everywhere;  // where s ≤ 0, 0 ≤ s ≤ 1, s ≥ 1
     if (sd != 0.0) {
-        // One division for both ends (two where 1/sd overflows: ∞·0 is NaN).
+        // One division for both ends.
         const double inverse_sd = 1.0 / sd;
-        const bool finite = std::abs(inverse_sd) < infinity;
-        const double at_start = finite ? -s0 * inverse_sd : -s0 / sd;
-        const double at_end = finite ? (1.0 - s0) * inverse_sd : (1.0 - s0) / sd;
+        const double at_start = times_inverse(-s0, sd, inverse_sd), at_end = times_inverse(1.0 - s0, sd, inverse_sd);
         body = {std::min(at_start, at_end), std::max(at_start, at_end)};
         start = sd > 0.0 ? Span{-infinity, at_start} : Span{at_start, infinity};
         finish = sd > 0.0 ? Span{at_end, infinity} : Span{-infinity, at_end};

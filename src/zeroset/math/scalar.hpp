@@ -17,6 +17,14 @@ namespace zeroset {
 /// rounding-error bound.
 inline constexpr double unit_roundoff = std::numeric_limits<double>::epsilon() / 2.0;
 
+/// x/y as x·(1/y), with 1/y found once for several quotients or off a chain
+/// of dependent steps: a rounding more than the division, and none on the
+/// chain — except where 1/y overflowed (|y| below 2⁻¹⁰²⁴), as ∞·0 would be
+/// NaN: there the division itself.
+inline double times_inverse(double x, double y, double inverse_y) {
+    return std::abs(inverse_y) < std::numeric_limits<double>::infinity() ? x * inverse_y : x / y;
+}
+
 template <std::floating_point F> inline F square(F a) { return a * a; }
 template <std::floating_point F> inline F sqrt(F a) { return std::sqrt(a); }
 template <std::floating_point F> inline F abs(F a) { return std::fabs(a); }

@@ -81,12 +81,10 @@ struct NearestApproach {
 /// With 1/|qd|² known already (a sphere's, from the ray's 1/|d|²), no
 /// division at all; else one, beside the dot product. Any t serves the
 /// bounds taken at the nearest approach, and the widths about it are far
-/// wider than its rounding. (Where 1/a2 overflows, a2 below 2⁻¹⁰²⁴, t
-/// comes from a division, as ∞ would make it NaN.)
+/// wider than its rounding.
 inline NearestApproach nearest_approach(const Vec3d& q0, const Vec3d& qd, double inverse_a2) {
     const double a2 = dot(qd, qd);
-    const double along = dot(q0, qd);
-    const double nearest = inverse_a2 < std::numeric_limits<double>::infinity() ? -along * inverse_a2 : -along / a2;
+    const double nearest = times_inverse(-dot(q0, qd), a2, inverse_a2);
     const Vec3d closest = q0 + nearest * qd;
     return {a2, nearest, dot(closest, closest), inverse_a2};
 }
@@ -100,10 +98,7 @@ inline NearestApproach nearest_approach(const Vec3d& q0, const Vec3d& qd) {
 inline std::optional<ReachOnRay> reach_on_ray(const NearestApproach& approach, double reach) {
     const auto [a2, nearest, u_min, inverse_a2] = approach;
     if (!(a2 > 0.0) || !(u_min <= reach)) return std::nullopt;
-    // (1/a2 overflows only for a2 below 2⁻¹⁰²⁴: there 0·∞ would be NaN.)
-    const double width_square = inverse_a2 < std::numeric_limits<double>::infinity() ? (reach - u_min) * inverse_a2
-                                                                                      : (reach - u_min) / a2;
-    const double half = std::sqrt(width_square) * (1.0 + 1e-12) + 1e-12 * std::abs(nearest);
+    const double half = std::sqrt(times_inverse(reach - u_min, a2, inverse_a2)) * (1.0 + 1e-12) + 1e-12 * std::abs(nearest);
     return ReachOnRay{{nearest - half, nearest + half}, nearest, u_min};
 }
 inline std::optional<ReachOnRay> reach_on_ray(const Vec3d& q0, const Vec3d& qd, double reach) {
