@@ -20,7 +20,6 @@ namespace zeroset {
 
 namespace {
 
-
 /// γ_k = k·u / (1 − k·u) (Higham §3.1).
 double gamma(int k) { return k * unit_roundoff / (1.0 - k * unit_roundoff); }
 
@@ -217,7 +216,6 @@ ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<
     }
     return {settings.threshold - field, -slope};
 }
-
 
 double blob_field_upper_bound(const BlobSegmentSettings& settings, std::span<const KernelOnRay> kernels,
                               std::span<const std::uint32_t> active, double ta, double tb) {
