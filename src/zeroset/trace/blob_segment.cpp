@@ -265,11 +265,9 @@ int BlobSegmentSolver::polynomial(std::span<const KernelOnRay> kernels, std::spa
 }
 
 MetaballPieces metaball_pieces(const KernelOnRay& k) {
-    const double a2 = dot(k.qd, k.qd), nearest = -dot(k.q0, k.qd) / a2;
-    const Vec3d closest = k.q0 + nearest * k.qd;
-    const double u_min = dot(closest, closest);
+    const auto [a2, nearest, u_min, inverse_a2] = nearest_approach(k.q0, k.qd);
     if (!(u_min < 1.0 / 9.0)) return {{k.t_in, nearest, k.t_out, 0.0, 0.0}, 3};
-    const double inner = std::sqrt((1.0 / 9.0 - u_min) / a2);
+    const double inner = std::sqrt(times_inverse(1.0 / 9.0 - u_min, a2, inverse_a2));
     return {{k.t_in, nearest - inner, nearest, nearest + inner, k.t_out}, 5};
 }
 

@@ -54,8 +54,9 @@ struct KernelOnRay {
     std::uint32_t component;
     /// kernel_upper_bound over [t_in, t_out]: blob_field_upper_bound's quick first try.
     double peak = 0.0;
-    /// Where the ray comes nearest the component's center (or axis); −∞
-    /// when every point is as near (a ray along a cylinder's axis).
+    /// Where the ray comes nearest the component's center (or axis), as
+    /// nearest_approach finds it: kernel_upper_bound starts there. −∞ when
+    /// every point is as near (a ray along a cylinder's axis, qd = 0).
     double nearest = -std::numeric_limits<double>::infinity();
 };
 
@@ -174,12 +175,12 @@ inline double kernel_upper_bound_at(const BlobSegmentSettings& settings, const K
         std::max(0.0, (u * (1.0 - 8.0 * unit_roundoff) - c * (u + 1.0) * (1.0 + 4.0 * unit_roundoff)) * (1.0 - 4.0 * unit_roundoff));
     return k.strength * kernel_value_at(settings.kernel, shortest_square, k.blobbiness) * (1.0 + 4.0 * unit_roundoff);
 }
-/// The same over [ta, tb], from the component's nearest approach there.
+/// The same over [ta, tb], from the component's nearest approach there:
+/// k.nearest held to the segment, as u grows away from it.
 inline double kernel_upper_bound(const BlobSegmentSettings& settings, const KernelOnRay& k, double ta, double tb) {
     if (k.strength < 0.0) return 0.0;
     // A ray along a cylinder's axis has qd = 0: u is the same everywhere (and [ta, tb] may be endless).
-    const double a2 = dot(k.qd, k.qd);
-    const double nearest = a2 > 0.0 ? std::clamp(-dot(k.q0, k.qd) / a2, ta, tb) : 0.0;
+    const double nearest = dot(k.qd, k.qd) > 0.0 ? std::clamp(k.nearest, ta, tb) : 0.0;
     const Vec3d q = k.q0 + nearest * k.qd;
     return kernel_upper_bound_at(settings, k, nearest, dot(q, q));
 }
