@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -169,6 +170,12 @@ public:
                                                  const AxisLine& axis, double radius);
 
 private:
+    static constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
+    /// Whether a square (|d|², or a beside test's bound) is a normal double
+    /// far from underflow and overflow, where the beside tests' rounding
+    /// arguments hold.
+    static bool well_scaled(double square) { return square >= 0x1p-900 && square <= 0x1p900; }
+
     /// One component, prepared.
     struct Component {
         std::uint32_t index;  // in the model (its to_kernel map)

@@ -12,7 +12,6 @@ namespace zeroset {
 
 namespace {
 
-constexpr double u4 = 2.0 * std::numeric_limits<double>::epsilon();  // 4 units of rounding
 // A camera tile that sees more components than this walks the BVH: a ray
 // that meets nothing walks its tile's whole list.
 constexpr std::size_t max_tile_list = 128;
