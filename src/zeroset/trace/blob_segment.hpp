@@ -55,8 +55,9 @@ struct KernelOnRay {
     /// kernel_upper_bound over [t_in, t_out]: blob_field_upper_bound's quick first try.
     double peak = 0.0;
     /// Where the ray comes nearest the component's center (or axis), as
-    /// nearest_approach finds it: kernel_upper_bound starts there. −∞ when
-    /// every point is as near (a ray along a cylinder's axis, qd = 0).
+    /// nearest_approach finds it: kernel_upper_bound starts there, so it
+    /// must be set whenever qd ≠ 0. −∞ when every point is as near (a ray
+    /// along a cylinder's axis, qd = 0).
     double nearest = -std::numeric_limits<double>::infinity();
 };
 
