@@ -64,6 +64,53 @@ TEST(BlobKernels, SlopesAndEnclosuresAreRight) {
     }
 }
 
+/// K(u) in long double (64-bit mantissa), with the same double coefficients.
+long double exact_kernel(BlobKernel kernel, double u, double blobbiness) {
+    const long double w = u;
+    switch (kernel) {
+        case BlobKernel::Blinn: return std::exp(static_cast<long double>(blobbiness) * (w - 1.0L));
+        case BlobKernel::PovRay: return u >= 1.0 ? 0.0L : (1.0L - w) * (1.0L - w);
+        case BlobKernel::Metaball: {
+            if (u >= 1.0) return 0.0L;
+            if (u <= 1.0 / 9.0) return 1.0L - 3.0L * w;
+            const long double m = 1.0L - std::sqrt(w);
+            return 1.5L * m * m;
+        }
+        case BlobKernel::Soft: {
+            if (u >= 1.0) return 0.0L;
+            const std::span<const double> c = blob_kernel_info(kernel).polynomial;
+            long double sum = c.back();
+            for (std::size_t i = c.size() - 1; i-- > 0;) sum = sum * w + c[i];
+            return sum;
+        }
+    }
+    return 0.0L;
+}
+
+TEST(BlobKernels, ValueAboveBoundsTheExactKernel) {
+    // The segments' skip test sums these bounds: one below K would let a
+    // segment that reaches T by a graze be skipped.
+    std::mt19937_64 random(20261207);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const BlobKernelInfo& info : blob_kernels()) {
+        int value_alone_below = 0;
+        for (int i = 0; i < 200000; ++i) {
+            // Mostly near u = 1, where K is small and the rounding of the
+            // terms that cancel there is not.
+            const double u = i % 3 == 0 ? 1.3 * unit(random) : 1.0 - std::ldexp(unit(random), -(i % 40));
+            const double b = -std::ldexp(0.5 + unit(random), i % 6);  // Blinn's B, −0.5 to −64
+            const long double exact = exact_kernel(info.kernel, u, b);
+            const double above = kernel_value_above(info.kernel, u, b);
+            ASSERT_GE(static_cast<long double>(above), exact) << info.name << " at u = " << u << ", B = " << b;
+            const long double room = info.kernel == BlobKernel::Blinn ? 1e-13L * exact : 1e-13L;
+            ASSERT_LE(static_cast<long double>(above), exact + room) << info.name << " at u = " << u;
+            if (static_cast<long double>(kernel_value_at(info.kernel, u, b)) < exact) ++value_alone_below;
+        }
+        // The computed value alone is no bound: it is below K as often as above.
+        EXPECT_GT(value_alone_below, 1000) << info.name;
+    }
+}
+
 /// Twelve components in [−1, 1]³: two of them negative, one an ellipsoid,
 /// two cylinders (one along z) unless only round ones are wanted (the
 /// metaballs' quadratic pieces).

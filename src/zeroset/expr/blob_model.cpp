@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -149,6 +150,23 @@ KernelValue other_kernel_at(BlobKernel kernel, double u, double blobbiness) {
 
 double other_kernel_value_at(BlobKernel kernel, double u, double blobbiness) {
     return kernel_value<double>(kernel, u, blobbiness);
+}
+
+double other_kernel_value_above(BlobKernel kernel, double u, double blobbiness) {
+    constexpr double r = std::numeric_limits<double>::epsilon() / 2.0;
+    constexpr double soft_magnitude = [] {
+        double sum = 0.0;
+        for (const double c : soft_polynomial) sum += c < 0.0 ? -c : c;
+        return sum;
+    }();
+    const double k = kernel_value<double>(kernel, u, blobbiness);
+    switch (kernel) {
+        case BlobKernel::Blinn: return k * (1.0 + (4.0 * std::abs(blobbiness * (u - 1.0)) + 8.0) * r);
+        case BlobKernel::Metaball: return u >= 1.0 ? 0.0 : k + 8.0 * r;
+        case BlobKernel::Soft: return u >= 1.0 ? 0.0 : k + 8.0 * r * soft_magnitude;
+        case BlobKernel::PovRay: break;
+    }
+    return k * (1.0 + 4.0 * r);
 }
 
 Interval kernel_over(BlobKernel kernel, const Interval& u, double blobbiness) {

@@ -20,7 +20,9 @@
 // trace the same field for comparison.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -82,6 +84,18 @@ inline KernelValue kernel_at(BlobKernel kernel, double u, double blobbiness) {
 inline double kernel_value_at(BlobKernel kernel, double u, double blobbiness) {
     if (kernel != BlobKernel::PovRay) return other_kernel_value_at(kernel, u, blobbiness);
     return u >= 1.0 ? 0.0 : povray_kernel(u);
+}
+/// An upper bound on the exact K(u), u ≥ 0 (the polynomials' as their
+/// double coefficients give them), from the computed value and a bound on
+/// its rounding, r the unit roundoff: POV-Ray's (1 − u)² is within 3r of
+/// itself; Blinn's e^(B(u − 1)) within (2|B(u − 1)| + 3)r of itself (the
+/// argument's two roundings, then glibc's exp, under an ulp); soft
+/// objects' cubic by Horner within γ₆·Σ|cᵢ| on [0, 1); the metaball's
+/// pieces (each term below 1) within 8r. Each is taken with room to spare.
+double other_kernel_value_above(BlobKernel kernel, double u, double blobbiness);
+inline double kernel_value_above(BlobKernel kernel, double u, double blobbiness) {
+    if (kernel != BlobKernel::PovRay) return other_kernel_value_above(kernel, u, blobbiness);
+    return u >= 1.0 ? 0.0 : povray_kernel(u) * (1.0 + 2.0 * std::numeric_limits<double>::epsilon());
 }
 /// An outward-rounded enclosure of K over u ∈ U (U ≥ 0): every kernel
 /// decreases in u, so it is [K(U.hi), K(U.lo)] widened by the evaluations'

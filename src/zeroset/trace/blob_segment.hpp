@@ -161,8 +161,8 @@ ValueAndDerivative blob_field_at(const BlobSegmentSettings& settings, std::span<
 // Inline, as the segments' bounds ask for them once a component and segment.
 /// An upper bound on s·K(u) from a point of the ray already found nearest
 /// the component: t and the computed u = |q0 + t·qd|² there, with the
-/// error of mapping the ray into its space; 0 for a negative strength.
-/// Exact kernels only.
+/// error of mapping the ray into its space and of evaluating K; 0 for a
+/// negative strength. Exact kernels only.
 inline double kernel_upper_bound_at(const BlobSegmentSettings& settings, const KernelOnRay& k, double t, double u) {
     if (k.strength < 0.0) return 0.0;
     // |q| a little short by c, what the mapping and q0 + t·qd may be off
@@ -170,11 +170,12 @@ inline double kernel_upper_bound_at(const BlobSegmentSettings& settings, const K
     // every kernel decreases in u. Without a square root: (√u − c)² ≥
     // u − 2c·√u ≥ u − c·(u + 1), as 2√u ≤ u + 1; c is tiny, so the bound
     // is as tight. The factors of 1 ± units cover u's own rounding and this
-    // line's. (The sums of |coordinates| bound lengths the same way.)
+    // line's, kernel_value_above K's. (The sums of |coordinates| bound
+    // lengths the same way.)
     const double c = 1.7321 * (k.q0_error + std::abs(t) * k.qd_error + 4.0 * unit_roundoff * (norm1(k.q0) + std::abs(t) * norm1(k.qd)));
     const double shortest_square =
         std::max(0.0, (u * (1.0 - 8.0 * unit_roundoff) - c * (u + 1.0) * (1.0 + 4.0 * unit_roundoff)) * (1.0 - 4.0 * unit_roundoff));
-    return k.strength * kernel_value_at(settings.kernel, shortest_square, k.blobbiness) * (1.0 + 4.0 * unit_roundoff);
+    return k.strength * kernel_value_above(settings.kernel, shortest_square, k.blobbiness) * (1.0 + 2.0 * unit_roundoff);
 }
 /// The same over [ta, tb], from the component's nearest approach there:
 /// k.nearest held to the segment, as u grows away from it.
