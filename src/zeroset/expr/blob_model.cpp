@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -153,20 +152,16 @@ double other_kernel_value_at(BlobKernel kernel, double u, double blobbiness) {
 }
 
 double other_kernel_value_above(BlobKernel kernel, double u, double blobbiness) {
-    constexpr double r = std::numeric_limits<double>::epsilon() / 2.0;
+    if (kernel == BlobKernel::PovRay) return kernel_value_above(kernel, u, blobbiness);  // the inline one's
     constexpr double soft_magnitude = [] {
         double sum = 0.0;
         for (const double c : soft_polynomial) sum += c < 0.0 ? -c : c;
         return sum;
     }();
     const double k = kernel_value<double>(kernel, u, blobbiness);
-    switch (kernel) {
-        case BlobKernel::Blinn: return k * (1.0 + (4.0 * std::abs(blobbiness * (u - 1.0)) + 8.0) * r);
-        case BlobKernel::Metaball: return u >= 1.0 ? 0.0 : k + 8.0 * r;
-        case BlobKernel::Soft: return u >= 1.0 ? 0.0 : k + 8.0 * r * soft_magnitude;
-        case BlobKernel::PovRay: break;
-    }
-    return k * (1.0 + 4.0 * r);
+    if (kernel == BlobKernel::Blinn) return k * (1.0 + (4.0 * std::abs(blobbiness * (u - 1.0)) + 8.0) * unit_roundoff);
+    if (u >= 1.0) return 0.0;  // soft objects and metaballs vanish there exactly
+    return k + 8.0 * unit_roundoff * (kernel == BlobKernel::Soft ? soft_magnitude : 1.0);
 }
 
 Interval kernel_over(BlobKernel kernel, const Interval& u, double blobbiness) {

@@ -20,9 +20,7 @@
 // trace the same field for comparison.
 #pragma once
 
-#include <cmath>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -31,6 +29,7 @@
 #include "zeroset/expr/expr.hpp"
 #include "zeroset/math/interval.hpp"
 #include "zeroset/math/mat4.hpp"
+#include "zeroset/math/scalar.hpp"
 #include "zeroset/math/vec3.hpp"
 
 namespace zeroset {
@@ -95,7 +94,7 @@ inline double kernel_value_at(BlobKernel kernel, double u, double blobbiness) {
 double other_kernel_value_above(BlobKernel kernel, double u, double blobbiness);
 inline double kernel_value_above(BlobKernel kernel, double u, double blobbiness) {
     if (kernel != BlobKernel::PovRay) return other_kernel_value_above(kernel, u, blobbiness);
-    return u >= 1.0 ? 0.0 : povray_kernel(u) * (1.0 + 2.0 * std::numeric_limits<double>::epsilon());
+    return u >= 1.0 ? 0.0 : povray_kernel(u) * (1.0 + 4.0 * unit_roundoff);
 }
 /// An outward-rounded enclosure of K over u ∈ U (U ≥ 0): every kernel
 /// decreases in u, so it is [K(U.hi), K(U.lo)] widened by the evaluations'
