@@ -354,6 +354,52 @@ TEST(Blob, ACameraTilesRaysMeetTheComponentsByItsList) {
     }
 }
 
+// A tile the blob says its rays all miss (Blob::misses_tile: no
+// component's reach, or a field bounded below the threshold) has no hit on
+// any ray through its pixels or its corners — for every kernel, with
+// negative, stretched and cylinder components — and the bound proves tiles
+// whose rays do pass within reach of a component, not only those beside
+// every reach box.
+TEST(Blob, NoRayOfATileItMissesHitsIt) {
+    for (const BlobKernel kernel : {BlobKernel::Blinn, BlobKernel::Soft, BlobKernel::PovRay, BlobKernel::Metaball}) {
+        SCOPED_TRACE(blob_kernel_info(kernel).name);
+        const Blob blob(BlobDescription{"blob", random_blob(kernel, 31), no_material, 1e-9, 1});
+        TraceScratch scratch(1);
+        int missed = 0, missed_within_reach = 0, rays = 0;
+        for (int ty = 0; ty < 12; ++ty)
+            for (int tx = 0; tx < 12; ++tx) {
+                CameraFrustum f;
+                f.origin = {0.4, -0.3, -6.0};
+                f.forward = normalize(Vec3d{-0.05, 0.04, 1.0});
+                f.right = normalize(cross(Vec3d{0, 1, 0}, f.forward));
+                f.up = cross(f.forward, f.right);
+                f.columns = f.rows = 8;
+                f.du = 0.009;
+                f.dv = -0.009;
+                f.u0 = -0.45 + 0.072 * tx;
+                f.v0 = 0.45 - 0.072 * ty;
+                f.serial = CameraFrustum::new_serial();
+                if (!blob.misses_tile(f, scratch)) continue;
+                ++missed;
+                bool within_reach = false;
+                for (int py = 0; py <= 2 * f.rows; ++py)
+                    for (int px = 0; px <= 2 * f.columns; ++px) {  // the pixels' corners and centres
+                        const Ray ray{f.origin, normalize(f.forward + f.right * (f.u0 + 0.5 * px * f.du) +
+                                                          f.up * (f.v0 + 0.5 * py * f.dv))};
+                        const std::uint64_t kernels = scratch.counters.blob_kernels;
+                        EXPECT_FALSE(blob.first_hit(ray, 0.0, 1e9, scratch).has_value())
+                            << "tile " << tx << ", " << ty << ", point " << px << ", " << py;
+                        within_reach |= scratch.counters.blob_kernels > kernels;
+                        ++rays;
+                    }
+                missed_within_reach += within_reach;
+            }
+        EXPECT_GT(missed, 20);
+        EXPECT_GT(missed_within_reach, 5);  // the field bound proved them
+        EXPECT_GT(rays, 20 * 289);
+    }
+}
+
 // A shadow ray is first tried against the components in reach where the
 // last one found the inside (all strengths positive: their field alone is a
 // lower bound). Rays from a grid of points towards a light, neighbours in

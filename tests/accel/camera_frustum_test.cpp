@@ -1,8 +1,10 @@
 // CameraFrustum::misses: a box it calls missed meets no ray of the tile
 // (rays through random points of every pixel, and its corners), and the
-// test decides: boxes beside the tile, behind the eye or around it.
+// test decides: boxes beside the tile, behind the eye or around it. Its
+// distance_outside bounds how near the rays come to a segment.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -124,6 +126,55 @@ TEST(CameraFrustum, ASubnormalBoxOnATilesRayIsNotCulled) {
     ASSERT_TRUE(f.holds(Ray{f.origin, d}, f.ray_check().value()));
     const Vec3d q = d * std::numeric_limits<double>::denorm_min();  // on the ray at t = 2⁻¹⁰⁷⁴
     EXPECT_FALSE(f.misses({q, q}));
+}
+
+/// The distance from p to the ray's points at t ≥ 0.
+double distance_to_ray(const Vec3d& p, const Ray& ray) {
+    const double t = std::max(0.0, dot(p - ray.origin, ray.dir) / dot(ray.dir, ray.dir));
+    return length(ray.at(t) - p);
+}
+
+/// The distance from the segment [a, b] to the ray: convex along the
+/// segment, so a ternary search finds its least.
+double distance_segment_to_ray(const Vec3d& a, const Vec3d& b, const Ray& ray) {
+    double lo = 0.0, hi = 1.0;
+    const auto at = [&](double s) { return distance_to_ray(a + (b - a) * s, ray); };
+    for (int i = 0; i < 100; ++i) {
+        const double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
+        if (at(m1) < at(m2)) hi = m2;
+        else lo = m1;
+    }
+    return std::min({at(0.0), at(1.0), at(0.5 * (lo + hi))});
+}
+
+// distance_outside is a lower bound on how near any ray of the tile comes
+// to a point or a segment (rays through random points of every pixel and
+// the tile's corners), and not a loose one: for segments well beside the
+// tile it is most of the true distance.
+TEST(CameraFrustum, NoRayOfTheTileComesNearerASegmentThanItsDistanceOutside) {
+    const CameraFrustum f = tilted_tile();
+    const CameraFrustum::Planes planes = f.planes(f.dual_basis().value());
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), centre(-3.0, 3.0), offset(-1.0, 1.0);
+    int apart = 0, tight = 0;
+    for (int i = 0; i < 600; ++i) {
+        const Vec3d a = f.origin + f.forward * (2.0 * centre(rng)) + Vec3d{centre(rng), centre(rng), centre(rng)} * 0.4;
+        const Vec3d b = i % 3 == 0 ? a : a + Vec3d{offset(rng), offset(rng), offset(rng)};  // a point, or a segment
+        const double bound = f.distance_outside(a, b, planes);
+        ASSERT_GE(bound, 0.0);
+        double nearest = INFINITY;
+        const auto ray_through = [&](double cu, double cv) {
+            return Ray{f.origin, f.forward + f.right * (f.u0 + cu * f.columns * f.du) + f.up * (f.v0 + cv * f.rows * f.dv)};
+        };
+        for (const double cu : {0.0, 1.0})
+            for (const double cv : {0.0, 1.0}) nearest = std::min(nearest, distance_segment_to_ray(a, b, ray_through(cu, cv)));
+        for (int k = 0; k < 60; ++k) nearest = std::min(nearest, distance_segment_to_ray(a, b, ray_through(unit(rng), unit(rng))));
+        EXPECT_LE(bound, nearest * (1.0 + 1e-12)) << "segment " << i;
+        if (bound > 0.0) ++apart;
+        if (bound > 0.5 * nearest && nearest > 0.1) ++tight;
+    }
+    EXPECT_GT(apart, 300);
+    EXPECT_GT(tight, 200);
 }
 
 }  // namespace

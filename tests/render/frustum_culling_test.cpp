@@ -162,8 +162,11 @@ object "torus" {
 )",
                                     "quartics.zs", ".");
     const auto [proven, traced] = render_with_and_without_culling(scene);
-    EXPECT_GT(proven.stats.counters.proven_tile_rays, proven.stats.camera_rays / 10);  // the proofs served
+    // The proofs served: rays of a proven tile, and whole rows of them left untraced.
+    EXPECT_GT(proven.stats.counters.proven_tile_rays, 0u);
+    EXPECT_GT(proven.stats.untraced_camera_rays, proven.stats.camera_rays / 10);
     EXPECT_EQ(traced.stats.counters.proven_tile_rays, 0u);
+    EXPECT_EQ(traced.stats.untraced_camera_rays, 0u);
     EXPECT_GT(proven.stats.hits, 500u);
     EXPECT_EQ(proven.stats.hits, traced.stats.hits);
     std::size_t differing = 0;

@@ -41,6 +41,17 @@ constexpr auto later = [](const BlobScratch::Event& a, const BlobScratch::Event&
 // Blob::id_'s source: the per-thread caches tell blobs apart by it.
 std::atomic<std::uint64_t> next_blob_id{1};
 
+/// At most the least factor by which a component's map into its kernel's
+/// space, q = L⁻¹(p − center)/R, scales distances from its center (or
+/// axis): 1/R, or 1/(R·‖L‖) with ‖L‖ ≤ √3 times its longest column
+/// (rounded a little low); 0 for a shape that moves the kernel off the
+/// center.
+double least_scale(const BlobComponent& c) {
+    if (c.shape == Mat4::identity()) return 1.0 / c.radius;
+    if (!(c.shape.transform_point({0, 0, 0}) == Vec3d{0, 0, 0})) return 0.0;
+    return (1.0 - 1e-12) / (c.radius * std::sqrt(3.0) * c.shape.max_stretch());
+}
+
 }  // namespace
 
 Blob::Blob(BlobDescription description) : description_(std::move(description)), id_(next_blob_id++) {
@@ -67,7 +78,8 @@ Blob::Blob(BlobDescription description) : description_(std::move(description)), 
         components_.push_back({static_cast<std::uint32_t>(i), sphere, c.is_cylinder(), reach, c.strength, c.blobbiness,
                                c.center, 1.0 / c.radius, normal_or_zero(c.radius * c.radius), end, axis, dot(axis, axis),
                                1.0 / dot(axis, axis), length(axis), length(c.center),
-                               max_abs(c.center), max_abs(end), c.radius * std::sqrt(reach)});
+                               max_abs(c.center), max_abs(end), c.radius * std::sqrt(reach),
+                               least_scale(c)});
         boxes.push_back(m.reach_box(i, reach));
         if (!is_bounded(boxes.back()) || !std::isfinite(boxes.back().diagonal()))
             throw std::invalid_argument("component " + std::to_string(i + 1) + ": its reach is wider than a double can measure");

@@ -124,6 +124,13 @@ public:
     /// Stops at the first point found inside, not necessarily the first hit.
     bool occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
+    /// When the field stays below the threshold on every ray of the tile:
+    /// the components whose reach the tile meets (as the tile lists find
+    /// them; with none, the field is at the threshold, outside), each at
+    /// its least distance from the rays. Not proven past
+    /// max_components_bounded_by_tile of them.
+    bool misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const override;
+    static constexpr std::size_t max_components_bounded_by_tile = 64;
     /// ∇f of the components in reach of the point, normalised.
     Vec3d local_normal(const SurfaceRef& surface, TraceScratch& scratch) const override;
     [[nodiscard]] const std::string& name() const override { return description_.name; }
@@ -197,6 +204,7 @@ private:
         double center_largest;  // the largest |coordinate| of center, and of end
         double end_largest;
         double reach_length;    // R·√reach: how far from its center (or axis) it counts
+        double least_scale;     // at most the least factor its map scales lengths by: 1/R unless stretched
     };
     /// The ray with the sizes every component's mapping error is made of,
     /// worked out once a query.
@@ -248,6 +256,10 @@ private:
     void fill_tile_list(BlobScratch::TileList& list) const;
     /// A list entry's `beside` for round component c, e = eye − centre.
     [[nodiscard]] static double beside_bound(const Vec3d& eye, const Component& c, const Vec3d& from_center);
+    /// An upper bound on component i's s·K at any point of the tile's rays
+    /// (0 for a negative one), with its rounding.
+    [[nodiscard]] double field_above(std::uint32_t i, const CameraFrustum& tile,
+                                     const CameraFrustum::Planes& planes) const;
     /// A box about component i's reach (rounded outward).
     [[nodiscard]] Box3 reach_box(std::uint32_t i) const;
     /// Whether the ray is proven blocked by the components of the last

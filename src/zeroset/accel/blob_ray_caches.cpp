@@ -1,7 +1,8 @@
 // What a blob keeps per thread between rays (BlobScratch): a camera tile's
 // components nearest the eye first, which its rays walk instead of the
 // BVH, and the components that blocked the last shadow ray, which often
-// block the next.
+// block the next. Also a tile's question before its rays: whether its
+// field can reach the threshold anywhere along them.
 #include "zeroset/accel/blob.hpp"
 
 #include <algorithm>
@@ -93,6 +94,40 @@ void Blob::fill_tile_list(BlobScratch::TileList& list) const {
     if (list.usable)
         std::sort(list.entries.begin(), list.entries.end(),
                   [](const BlobScratch::TileList::Entry& a, const BlobScratch::TileList::Entry& b) { return a.nearest < b.nearest; });
+}
+
+bool Blob::misses_tile(const CameraFrustum& tile, TraceScratch&) const {
+    if (tile.misses(bounds())) return true;
+    const auto basis = tile.dual_basis();
+    if (!basis) return false;
+    const CameraFrustum::Planes planes = tile.planes(*basis);
+    // Each component the tile's rays come within reach of adds at most its
+    // kernel at its least distance from them: when the sum stays below T,
+    // f > 0 at every point of every ray — with room for the rounding of the
+    // field as the rays compute it, a few units of each term. (Not for the
+    // quadratic pieces, which may pass their kernel a little.)
+    double field = 0.0;
+    std::size_t met = 0;
+    bool missed = true;
+    bvh_->select([&](const Box3& box) { return !tile.misses(box, planes); },
+                 [&](std::uint32_t i) {
+                     if (tile.misses(reach_box(i), planes)) return true;
+                     if (settings_.metaball_quadratics || ++met > max_components_bounded_by_tile) return missed = false;
+                     field += field_above(i, tile, planes);
+                     return missed = field * (1.0 + 1e-9) < settings_.threshold;
+                 });
+    return missed;
+}
+
+double Blob::field_above(std::uint32_t i, const CameraFrustum& tile, const CameraFrustum::Planes& planes) const {
+    const Component& c = components_[i];
+    if (c.strength <= 0.0) return 0.0;
+    // |q| is at least least_scale times the distance from the center, or
+    // from a cylinder's axis segment.
+    const double distance = tile.distance_outside(c.center, c.end, planes);
+    const double scaled = distance * c.least_scale;
+    const double u = scaled * scaled * (1.0 - 8.0 * unit_roundoff);
+    return c.strength * kernel_value_above(settings_.kernel, u, c.blobbiness) * (1.0 + 2.0 * unit_roundoff);
 }
 
 void Blob::remember_blocker(const Ray& ray, double t, BlobScratch& s) const {

@@ -80,6 +80,20 @@ bool CameraFrustum::misses(const Box3& box, const Planes& planes) const {
     return false;
 }
 
+double CameraFrustum::distance_outside(const Vec3d& a, const Vec3d& b, const Planes& planes) const {
+    const Vec3d wa = a - origin, wb = b - origin;
+    // The rounding of w, of each product and of the division is a few units
+    // of |n|·(|a| + |b| + |origin|) over |n|: far below this.
+    const double slack = 1e-9 * (max_abs(a) + max_abs(b) + max_abs(origin));
+    double farthest = 0.0;
+    for (const Vec3d& n : planes.forms) {
+        // How far beyond the plane is affine along the segment: least at an end.
+        const double beyond = -std::max(dot(n, wa), dot(n, wb)) / length(n) - slack;
+        if (beyond > farthest) farthest = beyond;  // NaN (n = 0, endless points) proves nothing
+    }
+    return farthest;
+}
+
 std::optional<CameraFrustum::RayCheck> CameraFrustum::ray_check() const {
     const auto basis = dual_basis();
     if (!basis) return std::nullopt;

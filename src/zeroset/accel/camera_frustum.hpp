@@ -81,6 +81,11 @@ struct CameraFrustum {
     /// are asked.)
     [[nodiscard]] bool misses(const Box3& box) const;
     [[nodiscard]] bool misses(const Box3& box, const Planes& planes) const;
+    /// A lower bound on the distance from the segment from a to b (a point
+    /// when a = b) to every point of every ray of the tile (t ≥ 0): the
+    /// farthest of the planes the whole segment lies beyond, as the rays lie
+    /// within each — a little short for rounding; 0 when it may meet them.
+    [[nodiscard]] double distance_outside(const Vec3d& a, const Vec3d& b, const Planes& planes) const;
     /// The tile's rectangle [u_lo, u_hi] × [v_lo, v_hi] and a margin far
     /// wider than the rounding of a ray's (u, v).
     struct Rectangle {

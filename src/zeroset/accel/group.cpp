@@ -68,6 +68,22 @@ bool Group::occluded(const Ray& ray, double t_min, double t_max, TraceScratch& s
     return blocked;
 }
 
+bool Group::misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const {
+    const auto basis = tile.dual_basis();
+    if (!basis) return false;
+    const CameraFrustum::Planes planes = tile.planes(*basis);
+    int asked = 0;
+    const auto misses = [&](std::uint32_t i) {
+        return ++asked <= children_asked_per_tile && children_[i]->misses_tile(tile, scratch);
+    };
+    for (std::size_t i = bounded_; i < children_.size(); ++i)
+        if (!misses(static_cast<std::uint32_t>(i))) return false;
+    bool missed = true;
+    bvh_.select([&](const Box3& box) { return !tile.misses(box, planes); },
+                [&](std::uint32_t i) { return missed = misses(i); });
+    return missed;
+}
+
 void Group::spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const {
     const TraceScratch::SpanLease all(scratch);
     for (std::size_t i = bounded_; i < children_.size(); ++i) children_[i]->spans(ray, t_min, t_max, scratch, *all);

@@ -23,6 +23,10 @@ public:
     std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     bool occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
+    /// Every child the tile's frustum meets the box of misses the tile; false
+    /// (not proven) past `children_asked_per_tile` such children.
+    bool misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const override;
+    static constexpr int children_asked_per_tile = 16;
 
     [[nodiscard]] const std::vector<std::shared_ptr<const Primitive>>& children() const { return children_; }
     [[nodiscard]] const Bvh& bvh() const { return bvh_; }

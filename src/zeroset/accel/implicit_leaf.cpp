@@ -174,6 +174,20 @@ std::optional<ImplicitLeaf::SearchedSpan> ImplicitLeaf::searched_span(const Ray&
     return SearchedSpan{*span, *focus};
 }
 
+bool ImplicitLeaf::misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const {
+    // Camera rays start at the eye, t = 0, where the gate's test starts too.
+    if (tile.misses(region_.box()) || (description_.gate && tile.misses(description_.gate->enclosing_box())))
+        return true;
+    if (!proves_camera_tiles()) return false;
+    LeafScratch& leaf = scratch_for(scratch);
+    // A gated sheet's cheap misses pass beside its gate, and the proof, over
+    // the whole region its other rays search, would seldom hold: it is
+    // tried for its costly misses only.
+    const bool on_asking = !description_.gate;
+    if (!leaf.proven && on_asking) leaf.proven = std::make_unique<ProvenTiles>(tape_);
+    return leaf.proven && leaf.proven->proves_tile(tile, region_.box(), on_asking, scratch.counters);
+}
+
 std::optional<Hit> ImplicitLeaf::first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const {
     // A camera ray of a tile proven free of the surface misses at once.
     const bool camera = scratch.camera_frustum && proves_camera_tiles();

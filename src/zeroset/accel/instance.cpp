@@ -38,17 +38,22 @@ std::optional<Hit> Instance::first_hit(const Ray& ray, double t_min, double t_ma
     return hit;
 }
 
+CameraFrustum Instance::child_tile(const CameraFrustum& tile, TraceScratch& scratch) const {
+    TraceScratch::ChildTile& slot = scratch.child_tile(this);
+    if (slot.instance != this || tile.serial == 0 || slot.parent != tile.serial)
+        slot = {this, tile.serial, tile.in_child_space(to_child_)};
+    return slot.frustum;
+}
+
+bool Instance::misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const {
+    return tile.misses(box_) || child_->misses_tile(child_tile(tile, scratch), scratch);
+}
+
 // Out of line, so that rays without a tile (most, in most scenes) pay nothing for it.
 [[gnu::noinline]] std::optional<Hit> Instance::first_hit_in_tile(const Ray& ray, double t_min, double t_max,
                                                                  TraceScratch& scratch) const {
-    // A camera ray's tile goes into the child's space with the ray — once
-    // for the tile's rays, then copied from the scratch (a query below may
-    // reuse the slot while this one runs).
-    const CameraFrustum& parent = *scratch.camera_frustum;
-    TraceScratch::ChildTile& slot = scratch.child_tile(this);
-    if (slot.instance != this || parent.serial == 0 || slot.parent != parent.serial)
-        slot = {this, parent.serial, parent.in_child_space(to_child_)};
-    const CameraFrustum tile = slot.frustum;
+    // A camera ray's tile goes into the child's space with the ray.
+    const CameraFrustum tile = child_tile(*scratch.camera_frustum, scratch);
     const CameraFrustumScope scope(scratch, &tile);
     std::optional<Hit> hit = child_->first_hit(to_child(ray), t_min, t_max, scratch);
     if (hit) lift(*hit);

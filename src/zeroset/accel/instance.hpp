@@ -24,12 +24,18 @@ public:
     std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     bool occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
+    /// The child asked with the tile in its space.
+    bool misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const override;
 
     [[nodiscard]] const Primitive& child() const { return *child_; }
     [[nodiscard]] const Mat4& to_parent() const { return to_parent_; }
 
 private:
     [[nodiscard]] Ray to_child(const Ray& ray) const;
+    /// The tile in the child's space: made once for the tile's rays, then
+    /// copied from the scratch (a query below may reuse the slot while the
+    /// caller's runs), so that it keeps its serial for the child's caches.
+    [[nodiscard]] CameraFrustum child_tile(const CameraFrustum& tile, TraceScratch& scratch) const;
     /// first_hit() for a camera ray that comes with its tile (TraceScratch::camera_frustum).
     std::optional<Hit> first_hit_in_tile(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const;
     /// A hit in the child's terms, in the instance's.

@@ -293,6 +293,16 @@ bool ProvenTiles::proven_miss(Entry& e, const Ray& ray) {
     return true;
 }
 
+bool ProvenTiles::proves_tile(const CameraFrustum& tile, const Box3& box, bool on_asking, TraceCounters& counters) {
+    Entry* e = entry(tile);
+    if (!e) return false;
+    e->last_use = ++uses_;
+    if (on_asking && e->state == State::Untried && e->asked++ > 0 && e->check) try_proof(*e, box, counters);
+    if (e->state != State::Proven) return false;
+    spared_ += static_cast<std::uint64_t>(tile.pixels());
+    return true;
+}
+
 void ProvenTiles::traced(Entry& e, const Box3& box, bool hit, std::uint64_t spent, TraceCounters& counters) {
     e.last_use = ++uses_;
     if (e.state != State::Untried) return;
@@ -301,6 +311,10 @@ void ProvenTiles::traced(Entry& e, const Box3& box, bool hit, std::uint64_t spen
         return;
     }
     if (spent < costly_miss || ++e.costly_misses < misses_before_proof) return;  // a later miss may ask
+    try_proof(e, box, counters);
+}
+
+void ProvenTiles::try_proof(Entry& e, const Box3& box, TraceCounters& counters) {
     if (!proof_) proof_ = std::make_unique<PolynomialTileProof>(tape_);
     ++tries_;
     e.state = proof_->proves_outside(e.tile, box, counters) ? State::Proven : State::Unproven;

@@ -68,10 +68,12 @@ private:
 /// once, after 8 of its rays have missed at some cost (a tile with a hit
 /// among them is never tried, nor one whose misses cost the method next to
 /// nothing: they pass beside the gate or the bounds; a small object on
-/// screen seldom gets that far), and its verdict is kept for the last few
-/// tiles; trying stops where it does not pay (64 tries that spared fewer
-/// than 32 rays each). The proof, and its program, are made at the first
-/// try: a scene of thousands of small objects makes few.
+/// screen seldom gets that far), or when the renderer asks a second time
+/// whether the tile is empty (a row of it all missed, the cheap misses of a
+/// thin object too); its verdict is kept for the last few tiles; trying
+/// stops where it does not pay (64 tries that spared fewer than 32 rays
+/// each). The proof, and its program, are made at the first try: a scene
+/// of thousands of small objects makes few.
 class ProvenTiles {
 public:
     explicit ProvenTiles(const Tape& tape) : tape_(tape) {}
@@ -83,6 +85,7 @@ public:
         State state = State::Untried;
         std::uint32_t costly_misses = 0;
         std::uint64_t last_use = 0;
+        std::uint32_t asked = 0;  // by proves_tile
     };
     /// The tile's entry: kept, or made now in place of the least recently
     /// used; nullptr once trying has stopped.
@@ -90,6 +93,13 @@ public:
     /// True when the ray, one of the entry's tile's, is proven to miss f
     /// within the box the tile was tried with.
     bool proven_miss(Entry& e, const Ray& ray);
+    /// True when none of the tile's rays meets f within `box`, as the
+    /// renderer asks before the tile's rays and again after each row of
+    /// them that all missed: proven already, or — asked again of a tile not
+    /// yet tried, when `on_asking` — tried now, though its misses were
+    /// cheap (a thin object that most rays pass). The renderer then traces
+    /// none of the rest; they count as spared.
+    bool proves_tile(const CameraFrustum& tile, const Box3& box, bool on_asking, TraceCounters& counters);
     /// What a traced ray of the entry's tile found, and the evaluations it
     /// spent: enough costly misses in a tile not yet tried ask for its proof
     /// over `box` (the leaf's search box).
@@ -104,6 +114,9 @@ public:
     static constexpr std::size_t capacity = 4;
 
 private:
+    /// Tries the entry's proof over `box`, and stops trying where proofs do not pay.
+    void try_proof(Entry& e, const Box3& box, TraceCounters& counters);
+
     const Tape& tape_;
     std::unique_ptr<PolynomialTileProof> proof_;  // made at the first try
     std::array<Entry, capacity> entries_{};

@@ -8,12 +8,14 @@
 // Primitives are prepared once and shared, read-only, by every render
 // thread; what a query needs to write — evaluators, root finders, span
 // buffers, counters — lives in the thread's TraceScratch. A query costs one
-// virtual call per primitive it visits, never one per evaluation.
+// virtual call per primitive it visits, never one per evaluation. A camera
+// tile can be asked as a whole whether its rays all miss (misses_tile).
 #pragma once
 
 #include <optional>
 #include <string>
 
+#include "zeroset/accel/camera_frustum.hpp"
 #include "zeroset/accel/surface_ref.hpp"
 #include "zeroset/math/box3.hpp"
 
@@ -42,6 +44,16 @@ public:
     /// increasing t: a span that starts at t_min because the ray starts
     /// inside has an Open enter, one that runs on past t_max an Open exit.
     virtual void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const = 0;
+
+    /// True when it is proven that no camera ray of the tile (t ≥ 0) meets
+    /// the solid: the renderer then gives the tile's pixels the background
+    /// without tracing them. False when that is not certain — by default,
+    /// unless the tile misses the bounds. Cheap, and asked again as a
+    /// tile's rays go (a polynomial leaf proves a tile after a few misses).
+    virtual bool misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const {
+        (void)scratch;
+        return tile.misses(bounds());
+    }
 };
 
 /// A primitive that owns surfaces — a leaf of the tree: an implicit leaf or

@@ -2,6 +2,7 @@
 #include "zeroset/render/frame_render.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -86,7 +87,7 @@ std::vector<TileRect> image_tiles(int width, int height) {
 }
 
 TileWork& TileWork::operator+=(const TileWork& o) {
-    camera_rays += o.camera_rays, hits += o.hits, shadow_rays += o.shadow_rays, reflection_rays += o.reflection_rays;
+    camera_rays += o.camera_rays, untraced_camera_rays += o.untraced_camera_rays, hits += o.hits, shadow_rays += o.shadow_rays, reflection_rays += o.reflection_rays;
     trace += o.trace;
     cone += o.cone;
     seconds += o.seconds;
@@ -110,7 +111,6 @@ FrameRender::FrameRender(const Scene& scene, const RenderSettings& settings)
                           std::any_of(prepared_.leaves().begin(), prepared_.leaves().end(), [](const ImplicitLeaf* leaf) {
                               return leaf->octree() != nullptr || leaf->proves_camera_tiles();
                           }));
-    if (const Box3 box = prepared_.root().bounds(); settings.frustum_culling && is_bounded(box)) scene_box_ = box;
     prepare_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
 }
 
@@ -190,6 +190,7 @@ void FrameRender::fill_with_background(const TileRect& tile, Image& into, int or
         for (int px = tile.x0; px < tile.x1; ++px) {
             if (stopped()) break;
             work.camera_rays += static_cast<std::uint64_t>(spp);
+            work.untraced_camera_rays += static_cast<std::uint64_t>(spp);
             if (!store_pixel(into, px - origin_x, py - origin_y, color, none)) record_non_finite(px, py);
         }
 }
@@ -206,8 +207,10 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
     TileWork work;
     const CameraFrustum frustum = camera_.frustum(tile.x0, tile.y0, tile.x1, tile.y1);
     const CameraFrustum* culled = cull_camera_tiles_ ? &frustum : nullptr;
-    // Cone tracing looks beside a ray that misses, so it keeps every ray.
-    if (!cone && scene_box_ && frustum.misses(*scene_box_)) {
+    // A tile proven to see no surface is the background, untraced. (Cone
+    // tracing looks beside a ray that misses, so it keeps every ray.)
+    const bool skips_empty_tiles = !cone && settings_.frustum_culling;
+    if (skips_empty_tiles && tracer.misses_tile(frustum)) {
         fill_with_background(tile, into, origin_x, origin_y, work);
         report(worker, true);  // as every tile ends: the worker's allowance follows the frame's total
         work.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -238,6 +241,16 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
                 record_non_finite(px, py);
             report(worker, false);
         }
+        // Its rays all missed so far: it may be proven empty by now (a
+        // polynomial leaf proves a tile after a few costly misses, or when
+        // asked again). Asked after rows 1, 2, 4 and 8: each ask walks the
+        // objects the tile sees.
+        const int rows_done = py + 1 - tile.y0;
+        if (skips_empty_tiles && work.hits == 0 && py + 1 < tile.y1 && std::has_single_bit(static_cast<unsigned>(rows_done)) &&
+            tracer.misses_tile(frustum)) {
+            fill_with_background({tile.x0, py + 1, tile.x1, tile.y1}, into, origin_x, origin_y, work);
+            break;
+        }
     }
     report(worker, true);
     work.shadow_rays = shading.shadow_rays;
@@ -251,6 +264,7 @@ RenderStats FrameRender::finish(const TileWork& all_tiles, int threads, double s
     if (auto why = failure()) throw RenderError(*why);
     RenderStats stats;
     stats.camera_rays = all_tiles.camera_rays;
+    stats.untraced_camera_rays = all_tiles.untraced_camera_rays;
     stats.hits = all_tiles.hits;
     stats.shadow_rays = all_tiles.shadow_rays;
     stats.reflection_rays = all_tiles.reflection_rays;

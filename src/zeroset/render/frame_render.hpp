@@ -89,7 +89,7 @@ private:
     void allow(Worker& worker, std::uint64_t total) const;
     void record_nan(const TraceScratch::NanRecord& nan);
     void record_non_finite(int px, int py);
-    /// A tile whose rays all pass beside the scene's bounds: the background, with no ray made.
+    /// A tile, or its rows left, proven to see no surface (Primitive::misses_tile): the background, with no ray made.
     void fill_with_background(const TileRect& tile, Image& into, int origin_x, int origin_y, TileWork& work);
 
     std::chrono::steady_clock::time_point created_ = std::chrono::steady_clock::now();
@@ -101,9 +101,6 @@ private:
     // partitioned (it culls them) or some object is a blob (it lists its
     // components by them); for the others a tile would only cost.
     bool cull_camera_tiles_ = false;
-    // The scene's bounds, where finite: a tile whose rays all pass them is
-    // background without a ray traced.
-    std::optional<Box3> scene_box_;
     std::optional<SceneDistance> distance_;
     std::vector<TileRect> tiles_;
     double prepare_seconds_ = 0.0;

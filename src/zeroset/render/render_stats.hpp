@@ -34,6 +34,7 @@ struct RenderStats {
     double seconds = 0.0;          // the whole render
     double prepare_seconds = 0.0;  // of which preparing the scene (tapes, methods, BVHs)
     std::uint64_t camera_rays = 0;
+    std::uint64_t untraced_camera_rays = 0;  // of those, in tiles proven to see no surface: the background, untraced
     std::uint64_t shadow_rays = 0;
     std::uint64_t reflection_rays = 0;
     [[nodiscard]] std::uint64_t rays() const { return camera_rays + shadow_rays + reflection_rays; }

@@ -31,6 +31,9 @@ public:
                                           int pixel = 0);
     /// True when some surface lies on the ray in [0, t_max].
     bool occluded(const Ray& ray, double t_max);
+    /// True when no camera ray of the tile meets a surface, proven
+    /// (Primitive::misses_tile).
+    bool misses_tile(const CameraFrustum& tile) { return prepared_->root().misses_tile(tile, scratch_); }
     /// The hit's diffuse colour: its material's, or its pattern's there.
     Vec3d albedo(const SurfaceHit& hit);
 

@@ -31,6 +31,7 @@ TileRect tile_at(int width, int height, std::size_t index);
 /// What tracing some tiles cost; summed over tiles into the render's stats.
 struct TileWork {
     std::uint64_t camera_rays = 0;
+    std::uint64_t untraced_camera_rays = 0;  // of those, in tiles proven to see no surface (Primitive::misses_tile)
     std::uint64_t hits = 0;
     std::uint64_t shadow_rays = 0;
     std::uint64_t reflection_rays = 0;
