@@ -313,5 +313,47 @@ TEST(Primitives, APlaneTakesPartInCsg) {
     EXPECT_NEAR(corner->t, 3.0, 1e-12);
 }
 
+// An instance asks its child whether a camera tile misses it with the tile
+// carried into the child's space, where the child's own box is tighter
+// than the instance's box around it — unless its map is far from a
+// similarity (flattened across a turned axis): the tile's planes, carried
+// there, would be off by more than the box test's margin, so only its own
+// box is asked.
+TEST(Primitives, AnInstanceAsksItsChildOfATileOnlyThroughAWellConditionedMap) {
+    Leaves leaves;
+    const auto cube_leaf = leaves.add(cube(1.0), around({0, 0, 0}, 1.0), Method::Interval);
+    std::mt19937 random(4);
+    std::uniform_real_distribution<double> u(-0.5, 0.5);
+    for (const double flat : {0.5, 1e-6}) {
+        SCOPED_TRACE(flat);
+        const Mat4 turn = Mat4::rotate_xyz_degrees({35, 50, 20});
+        const Instance placed(cube_leaf, Mat4::scale({1.0, 1.0, flat}) * turn, no_material);
+        TraceScratch scratch(leaves.count());
+        int child_proved = 0;
+        for (int i = 0; i < 400; ++i) {
+            CameraFrustum f;
+            f.origin = {0.0, 0.0, -6.0};
+            f.forward = {0.0, 0.0, 1.0};
+            f.right = {1.0, 0.0, 0.0};
+            f.up = {0.0, 1.0, 0.0};
+            f.columns = f.rows = 4;
+            f.du = 0.01;
+            f.dv = -0.01;
+            f.u0 = u(random);
+            f.v0 = u(random);
+            f.serial = CameraFrustum::new_serial();
+            const bool by_box = f.misses(placed.bounds());
+            const bool missed = placed.misses_tile(f, scratch);
+            EXPECT_TRUE(missed || !by_box);
+            if (missed && !by_box) ++child_proved;
+        }
+        if (flat == 0.5) {
+            EXPECT_GT(child_proved, 10);  // the turned cube's corners leave room beside it
+        } else {
+            EXPECT_EQ(child_proved, 0);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace zeroset

@@ -125,10 +125,9 @@ public:
     bool occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
     /// When the field stays below the threshold on every ray of the tile:
-    /// the components whose reach the tile meets (as the tile lists find
-    /// them; with none, the field is at the threshold, outside), each at
-    /// its least distance from the rays. Not proven past
-    /// max_components_bounded_by_tile of them.
+    /// the components whose reach boxes the tile may meet (with none, the
+    /// field is at the threshold, outside), each at its least distance from
+    /// the rays. Not proven past max_components_bounded_by_tile of them.
     bool misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const override;
     static constexpr std::size_t max_components_bounded_by_tile = 64;
     /// ∇f of the components in reach of the point, normalised.

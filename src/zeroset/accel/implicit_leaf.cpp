@@ -180,8 +180,8 @@ bool ImplicitLeaf::misses_tile(const CameraFrustum& tile, TraceScratch& scratch)
         return true;
     if (!proves_camera_tiles()) return false;
     LeafScratch& leaf = scratch_for(scratch);
-    // A gated sheet's cheap misses pass beside its gate, and the proof, over
-    // the whole region its other rays search, would seldom hold: it is
+    // A gated surface's cheap misses pass beside its gate, and the proof,
+    // over the whole region its other rays search, would seldom hold: it is
     // tried for its costly misses only.
     const bool on_asking = !description_.gate;
     if (!leaf.proven && on_asking) leaf.proven = std::make_unique<ProvenTiles>(tape_);

@@ -13,6 +13,7 @@ Instance::Instance(std::shared_ptr<const Primitive> child, const Mat4& to_parent
     const std::optional<Mat4> inverse = to_parent.inverse();
     if (!inverse) throw std::invalid_argument("a transform must be invertible (a scale of 0 flattens the object)");
     to_child_ = *inverse;
+    condition_ = 3.0 * stretch_ * to_child_.max_stretch();  // each norm within √3 of its longest column
     box_ = to_parent_.transform_box(child_->bounds());
     if (std::isfinite(child_->bounds().diagonal()) && !std::isfinite(box_.diagonal()))
         throw std::invalid_argument("its transforms move its bounds past what a double can hold (the diagonal "
@@ -46,7 +47,8 @@ CameraFrustum Instance::child_tile(const CameraFrustum& tile, TraceScratch& scra
 }
 
 bool Instance::misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const {
-    return tile.misses(box_) || child_->misses_tile(child_tile(tile, scratch), scratch);
+    if (tile.misses(box_)) return true;
+    return condition_ <= well_conditioned && child_->misses_tile(child_tile(tile, scratch), scratch);
 }
 
 // Out of line, so that rays without a tile (most, in most scenes) pay nothing for it.

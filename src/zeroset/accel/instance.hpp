@@ -24,8 +24,13 @@ public:
     std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     bool occluded(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
-    /// The child asked with the tile in its space.
+    /// The child asked with the tile in its space — unless the map is so far
+    /// from a similarity that the tile's planes, carried there, would be
+    /// off by more than the margins of the tests below (the condition
+    /// number past `well_conditioned`): then only the box in this space.
     bool misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const override;
+    /// POV-Ray's axes, cylinders scaled by 0.01 across, are at 100.
+    static constexpr double well_conditioned = 1e3;
 
     [[nodiscard]] const Primitive& child() const { return *child_; }
     [[nodiscard]] const Mat4& to_parent() const { return to_parent_; }
@@ -46,6 +51,7 @@ private:
     Mat4 to_child_;
     MaterialId material_;
     double stretch_;  // how much to_parent stretches lengths
+    double condition_;  // at least the linear part's condition number, ‖A‖·‖A⁻¹‖ (within a factor of 3)
     Box3 box_;
 };
 

@@ -98,7 +98,8 @@ public:
     /// them that all missed: proven already, or — asked again of a tile not
     /// yet tried, when `on_asking` — tried now, though its misses were
     /// cheap (a thin object that most rays pass). The renderer then traces
-    /// none of the rest; they count as spared.
+    /// none of the rest; the tile's pixels count as spared (at most that
+    /// many: some were traced, and another object may keep the tile).
     bool proves_tile(const CameraFrustum& tile, const Box3& box, bool on_asking, TraceCounters& counters);
     /// What a traced ray of the entry's tile found, and the evaluations it
     /// spent: enough costly misses in a tile not yet tried ask for its proof
