@@ -133,6 +133,23 @@ std::shared_ptr<const BlobModel> random_blob(BlobKernel kernel, std::uint32_t se
     return std::make_shared<const BlobModel>(kernel, 0.5, std::move(components));
 }
 
+/// An 8 × 8-pixel camera tile from `origin` looking along `forward`, its
+/// pixels `pixel` wide on the image plane, its corner at (u0, v0).
+CameraFrustum eight_pixel_tile(const Vec3d& origin, const Vec3d& forward, double pixel, double u0, double v0) {
+    CameraFrustum f;
+    f.origin = origin;
+    f.forward = normalize(forward);
+    f.right = normalize(cross(Vec3d{0, 1, 0}, f.forward));
+    f.up = cross(f.forward, f.right);
+    f.columns = f.rows = 8;
+    f.du = pixel;
+    f.dv = -pixel;
+    f.u0 = u0;
+    f.v0 = v0;
+    f.serial = CameraFrustum::new_serial();
+    return f;
+}
+
 struct Comparison {
     int rays = 0, hits = 0, misses = 0, false_hits = 0, grazes = 0;
     double max_dt = 0.0;          // over the rays aimed at random
@@ -324,16 +341,8 @@ TEST(Blob, ACameraTilesRaysMeetTheComponentsByItsList) {
         TraceScratch scratch(1);
         int hits = 0;
         for (int tile = 0; tile < 6; ++tile) {
-            CameraFrustum f;
-            f.origin = {0.4, -0.3, -12.0};
-            f.forward = normalize(Vec3d{-0.03, 0.02, 1.0});
-            f.right = normalize(cross(Vec3d{0, 1, 0}, f.forward));
-            f.up = cross(f.forward, f.right);
-            f.columns = f.rows = 8;
-            f.du = 0.006;
-            f.dv = -0.006;
-            f.u0 = -0.3 + 0.1 * tile;
-            f.v0 = 0.25 - 0.09 * tile;
+            const CameraFrustum f = eight_pixel_tile({0.4, -0.3, -12.0}, {-0.03, 0.02, 1.0}, 0.006, -0.3 + 0.1 * tile,
+                                                     0.25 - 0.09 * tile);
             for (int py = 0; py < f.rows; ++py)
                 for (int px = 0; px < f.columns; ++px) {
                     const Ray ray{f.origin,
@@ -368,17 +377,8 @@ TEST(Blob, NoRayOfATileItMissesHitsIt) {
         int missed = 0, missed_within_reach = 0, rays = 0;
         for (int ty = 0; ty < 12; ++ty)
             for (int tx = 0; tx < 12; ++tx) {
-                CameraFrustum f;
-                f.origin = {0.4, -0.3, -6.0};
-                f.forward = normalize(Vec3d{-0.05, 0.04, 1.0});
-                f.right = normalize(cross(Vec3d{0, 1, 0}, f.forward));
-                f.up = cross(f.forward, f.right);
-                f.columns = f.rows = 8;
-                f.du = 0.009;
-                f.dv = -0.009;
-                f.u0 = -0.45 + 0.072 * tx;
-                f.v0 = 0.45 - 0.072 * ty;
-                f.serial = CameraFrustum::new_serial();
+                const CameraFrustum f =
+                    eight_pixel_tile({0.4, -0.3, -6.0}, {-0.05, 0.04, 1.0}, 0.009, -0.45 + 0.072 * tx, 0.45 - 0.072 * ty);
                 if (!blob.misses_tile(f, scratch)) continue;
                 ++missed;
                 bool within_reach = false;
