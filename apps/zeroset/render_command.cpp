@@ -57,8 +57,9 @@ Options:
                       against the partitioned objects by interval analysis
                       before their camera rays are traced, prove tiles free
                       of polynomial surfaces (their Bernstein form over the
-                      tile), and list the components of blobs each tile may
-                      meet (docs/methods.md)
+                      tile), list the components of blobs each tile may
+                      meet, and leave tiles proven to show nothing to the
+                      background, untraced (docs/methods.md)
   --max-evaluations N stop with an error once the render has spent N
                       evaluations of the surfaces (default: 16384 per camera
                       ray, at least 4194304; see docs/limits.md)

@@ -34,8 +34,10 @@ struct RenderSettings {
     std::optional<Partition> partition;
     /// Cull each image tile's frustum against the partitioned objects before
     /// their camera rays are traced (accel/frustum_cull.hpp), prove tiles
-    /// free of polynomial surfaces (accel/polynomial_tile_proof.hpp) and
-    /// list blobs' components by tile; off only to compare.
+    /// free of polynomial surfaces (accel/polynomial_tile_proof.hpp), list
+    /// blobs' components by tile, and leave tiles proven to show no object
+    /// to the background, untraced (Primitive::misses_tile); off only to
+    /// compare.
     bool frustum_culling = true;
     /// Evaluations of f (point, interval and gradient) the whole render may
     /// spend before it stops with a RenderError; default_evaluation_budget
