@@ -203,7 +203,7 @@ private:
         double center_largest;  // the largest |coordinate| of center, and of end
         double end_largest;
         double reach_length;    // R·√reach: how far from its center (or axis) it counts
-        double least_scale;     // at most the least factor its map scales lengths by: 1/R unless stretched
+        double least_scale;     // at most the least factor its map scales lengths by: 1/R unless stretched (0: not known)
     };
     /// The ray with the sizes every component's mapping error is made of,
     /// worked out once a query.

@@ -94,8 +94,8 @@ public:
     /// within the box the tile was tried with.
     bool proven_miss(Entry& e, const Ray& ray);
     /// True when none of the tile's rays meets f within `box`, as the
-    /// renderer asks before the tile's rays and again after each row of
-    /// them that all missed: proven already, or — asked again of a tile not
+    /// renderer asks before the tile's rays and again after some of its rows
+    /// while all missed: proven already, or — asked again of a tile not
     /// yet tried, when `on_asking` — tried now, though its misses were
     /// cheap (a thin object that most rays pass). The renderer then traces
     /// none of the rest; the tile's pixels count as spared (at most that
