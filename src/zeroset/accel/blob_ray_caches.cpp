@@ -97,10 +97,10 @@ void Blob::fill_tile_list(BlobScratch::TileList& list) const {
 }
 
 bool Blob::misses_tile(const CameraFrustum& tile, TraceScratch&) const {
-    if (tile.misses(bounds())) return true;
     const auto basis = tile.dual_basis();
     if (!basis) return false;
     const CameraFrustum::Planes planes = tile.planes(*basis);
+    if (tile.misses(bounds(), planes)) return true;
     // Each component the tile's rays come within reach of adds at most its
     // kernel at its least distance from them: when the sum stays below T,
     // f > 0 at every point of every ray — with room for the rounding of the

@@ -87,7 +87,8 @@ std::vector<TileRect> image_tiles(int width, int height) {
 }
 
 TileWork& TileWork::operator+=(const TileWork& o) {
-    camera_rays += o.camera_rays, untraced_camera_rays += o.untraced_camera_rays, hits += o.hits, shadow_rays += o.shadow_rays, reflection_rays += o.reflection_rays;
+    camera_rays += o.camera_rays, untraced_camera_rays += o.untraced_camera_rays, hits += o.hits;
+    shadow_rays += o.shadow_rays, reflection_rays += o.reflection_rays;
     trace += o.trace;
     cone += o.cone;
     seconds += o.seconds;
