@@ -83,23 +83,42 @@ public:
     }
 
     /// A camera tile carried into an instance's space (CameraFrustum::
-    /// in_child_space), kept for the tile's next rays: a small table
-    /// indexed by the instance's address, checked by the tile's serial.
+    /// in_child_space), kept for the tile's next rays: a small table of
+    /// two-way sets indexed by the instance's address, checked by the
+    /// tile's serial. Two ways, so that instances whose addresses share a
+    /// set (nested ones, one ray after another) do not evict each other:
+    /// each eviction made a new frustum with a new serial, which the
+    /// leaves' tile proofs then took for a new tile — whether that happened
+    /// hung on where the allocator put the instances, and cost steiner.pov
+    /// a third more work in some runs than in others.
     struct ChildTile {
         const void* instance = nullptr;
         std::uint64_t parent = 0;  // the serial of the tile it was made from
         CameraFrustum frustum;
     };
+    /// The instance's slot, or the one of its set used less recently for
+    /// the caller to fill.
     ChildTile& child_tile(const void* instance) {
         const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(instance);
-        return child_tiles_[((a >> 4) ^ (a >> 10)) % child_tiles_.size()];
+        const std::size_t set = ((a >> 4) ^ (a >> 10)) % child_tile_sets;
+        std::uint8_t& recent = child_tile_recent_[set];
+        for (std::uint8_t way = 0; way < 2; ++way) {
+            if (child_tiles_[2 * set + way].instance == instance) {
+                recent = way;
+                return child_tiles_[2 * set + way];
+            }
+        }
+        recent = static_cast<std::uint8_t>(1 - recent);
+        return child_tiles_[2 * set + recent];
     }
 
 private:
     std::vector<std::unique_ptr<LeafScratch>> leaves_;
     std::unique_ptr<BlobScratch> blob_;
     std::array<Occluder, 64> occluders_{};
-    std::array<ChildTile, 32> child_tiles_{};
+    static constexpr std::size_t child_tile_sets = 16;
+    std::array<ChildTile, 2 * child_tile_sets> child_tiles_{};
+    std::array<std::uint8_t, child_tile_sets> child_tile_recent_{};  // the way used last in each set
     std::vector<std::unique_ptr<SpanList>> span_pool_;
     std::size_t spans_in_use_ = 0;
 };
