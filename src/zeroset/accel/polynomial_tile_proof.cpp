@@ -293,11 +293,11 @@ bool ProvenTiles::proven_miss(Entry& e, const Ray& ray) {
     return true;
 }
 
-bool ProvenTiles::proves_tile(const CameraFrustum& tile, const Box3& box, bool on_asking, TraceCounters& counters) {
+bool ProvenTiles::proves_tile(const CameraFrustum& tile, const Box3& box, bool try_now, TraceCounters& counters) {
     Entry* e = entry(tile);
     if (!e) return false;
     e->last_use = ++uses_;
-    if (on_asking && e->state == State::Untried && e->asked++ > 0 && e->check) try_proof(*e, box, counters);
+    if (try_now && e->state == State::Untried && e->check) try_proof(*e, box, counters);
     if (e->state != State::Proven) return false;
     spared_ += static_cast<std::uint64_t>(tile.pixels());
     return true;

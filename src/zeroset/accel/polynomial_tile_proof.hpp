@@ -85,7 +85,6 @@ public:
         State state = State::Untried;
         std::uint32_t costly_misses = 0;
         std::uint64_t last_use = 0;
-        std::uint32_t asked = 0;  // by proves_tile
     };
     /// The tile's entry: kept, or made now in place of the least recently
     /// used; nullptr once trying has stopped.
@@ -95,12 +94,12 @@ public:
     bool proven_miss(Entry& e, const Ray& ray);
     /// True when none of the tile's rays meets f within `box`, as the
     /// renderer asks before the tile's rays and again after some of its rows
-    /// while all missed: proven already, or — asked again of a tile not
-    /// yet tried, when `on_asking` — tried now, though its misses were
-    /// cheap (a thin object that most rays pass). The renderer then traces
-    /// none of the rest; the tile's pixels count as spared (at most that
-    /// many: some were traced, and another object may keep the tile).
-    bool proves_tile(const CameraFrustum& tile, const Box3& box, bool on_asking, TraceCounters& counters);
+    /// while all missed: proven already, or — for a tile not yet tried,
+    /// when `try_now` (rows have missed) — tried now, though its misses
+    /// were cheap (a thin object that most rays pass). The renderer then
+    /// traces none of the rest; the tile's pixels count as spared (at most
+    /// that many: some were traced, and another object may keep the tile).
+    bool proves_tile(const CameraFrustum& tile, const Box3& box, bool try_now, TraceCounters& counters);
     /// What a traced ray of the entry's tile found, and the evaluations it
     /// spent: enough costly misses in a tile not yet tried ask for its proof
     /// over `box` (the leaf's search box).

@@ -46,6 +46,11 @@ public:
     /// frustum (accel/frustum_cull.hpp) read it.
     const CameraFrustum* camera_frustum = nullptr;
     int camera_pixel = 0;
+    /// While the renderer asks whether a camera tile shows nothing
+    /// (Primitive::misses_tile): whether rows of the tile have been traced
+    /// and all missed. A leaf then tries its tile proof, though its misses
+    /// were cheap (a thin object most rays pass).
+    bool tile_rows_missed = false;
 
     /// The scratch slot of leaf `id` (empty until the leaf fills it).
     std::unique_ptr<LeafScratch>& leaf(std::size_t id) { return leaves_.at(id); }

@@ -211,7 +211,7 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
     // A tile proven to see no surface is the background, untraced. (Cone
     // tracing looks beside a ray that misses, so it keeps every ray.)
     const bool skips_empty_tiles = !cone && settings_.frustum_culling;
-    if (skips_empty_tiles && tracer.misses_tile(frustum)) {
+    if (skips_empty_tiles && tracer.misses_tile(frustum, false)) {
         fill_with_background(tile, into, origin_x, origin_y, work);
         report(worker, true);  // as every tile ends: the worker's allowance follows the frame's total
         work.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -248,7 +248,7 @@ TileWork FrameRender::render_tile(std::size_t index, Worker& worker, Image& into
         // objects the tile sees.
         const int rows_done = py + 1 - tile.y0;
         if (skips_empty_tiles && work.hits == 0 && py + 1 < tile.y1 && std::has_single_bit(static_cast<unsigned>(rows_done)) &&
-            tracer.misses_tile(frustum)) {
+            tracer.misses_tile(frustum, true)) {
             fill_with_background({tile.x0, py + 1, tile.x1, tile.y1}, into, origin_x, origin_y, work);
             break;
         }

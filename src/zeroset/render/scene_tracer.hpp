@@ -33,7 +33,14 @@ public:
     bool occluded(const Ray& ray, double t_max);
     /// True when no camera ray of the tile meets a surface, proven
     /// (Primitive::misses_tile).
-    bool misses_tile(const CameraFrustum& tile) { return prepared_->root().misses_tile(tile, scratch_); }
+    /// `rows_missed`: rows of the tile are traced and all missed
+    /// (TraceScratch::tile_rows_missed).
+    bool misses_tile(const CameraFrustum& tile, bool rows_missed) {
+        scratch_.tile_rows_missed = rows_missed;
+        const bool missed = prepared_->root().misses_tile(tile, scratch_);
+        scratch_.tile_rows_missed = false;
+        return missed;
+    }
     /// The hit's diffuse colour: its material's, or its pattern's there.
     Vec3d albedo(const SurfaceHit& hit);
 
