@@ -355,5 +355,49 @@ TEST(Primitives, AnInstanceAsksItsChildOfATileOnlyThroughAWellConditionedMap) {
     }
 }
 
+// A leaf bounded or gated by a sphere (POV-Ray's bounded_by) passes the
+// tiles whose rays all pass beside the sphere, across its box's corners
+// too — and no ray of such a tile comes within the sphere.
+TEST(Primitives, ALeafPassesTheTilesBesideItsSphereNotOnlyBesideItsBox) {
+    std::mt19937 random(8);
+    std::uniform_real_distribution<double> u(-0.2, 0.2);
+    for (const bool gated : {false, true}) {
+        SCOPED_TRACE(gated ? "gate" : "bounds");
+        LeafDescription d;
+        d.name = "ball";
+        d.surface = ball({0, 0, 0}, 2.0);  // solid all through the bounds: no face of them shrinks
+        d.method = Method::Interval;
+        d.bounds = gated ? Bounds::make_box(around({0, 0, 0}, 1.0)) : Bounds::make_sphere({0, 0, 0}, 1.0);
+        if (gated) d.gate = Bounds::make_sphere({0, 0, 0}, 1.0);
+        const ImplicitLeaf leaf(0, d);
+        TraceScratch scratch(1);
+        int beside_box_only = 0;
+        for (int i = 0; i < 400; ++i) {
+            CameraFrustum f;
+            f.origin = {0.0, 0.0, -6.0};
+            f.forward = {0.0, 0.0, 1.0};
+            f.right = {1.0, 0.0, 0.0};
+            f.up = {0.0, 1.0, 0.0};
+            f.columns = f.rows = 4;
+            f.du = 0.005;
+            f.dv = -0.005;
+            f.u0 = u(random);
+            f.v0 = u(random);
+            f.serial = CameraFrustum::new_serial();
+            if (!leaf.misses_tile(f, scratch)) continue;
+            if (!f.misses(around({0, 0, 0}, 1.0))) ++beside_box_only;
+            for (double a = 0.0; a <= 1.0; a += 0.125) {
+                for (double b = 0.0; b <= 1.0; b += 0.125) {
+                    // The rays through the tile's rectangle, edges included.
+                    const Vec3d dir = f.forward + f.right * (f.u0 + a * f.columns * f.du) + f.up * (f.v0 + b * f.rows * f.dv);
+                    const double along = -dot(f.origin, dir) / dot(dir, dir);
+                    EXPECT_GT(length(f.origin + dir * along), 1.0);
+                }
+            }
+        }
+        EXPECT_GT(beside_box_only, 20);  // tiles across the box's corners, beside the sphere
+    }
+}
+
 }  // namespace
 }  // namespace zeroset

@@ -176,8 +176,19 @@ std::optional<ImplicitLeaf::SearchedSpan> ImplicitLeaf::searched_span(const Ray&
 
 bool ImplicitLeaf::misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const {
     // Camera rays start at the eye, t = 0, where the gate's test starts too.
-    if (tile.misses(region_.box()) || (description_.gate && tile.misses(description_.gate->enclosing_box())))
-        return true;
+    // A sphere is passed when its box is, or when no ray of the tile comes
+    // within its radius of its centre (POV-Ray's bounded_by spheres: the
+    // tiles beside a sphere but across its box's corners).
+    if (const auto basis = tile.dual_basis()) {
+        const CameraFrustum::Planes planes = tile.planes(*basis);
+        const auto passes = [&](const Bounds& b, const Box3& box) {
+            return tile.misses(box, planes) ||
+                   (b.kind == Bounds::Kind::Sphere && tile.distance_outside(b.center, b.center, planes) > b.radius);
+        };
+        if (passes(region_.bounds(), region_.box()) ||
+            (description_.gate && passes(*description_.gate, description_.gate->enclosing_box())))
+            return true;
+    }
     if (!proves_camera_tiles()) return false;
     LeafScratch& leaf = scratch_for(scratch);
     // Tried once rows of the tile have all missed — at the same ask for

@@ -103,8 +103,8 @@ public:
     [[nodiscard]] Box3 bounds() const override { return region_.box(); }
     std::optional<Hit> first_hit(const Ray& ray, double t_min, double t_max, TraceScratch& scratch) const override;
     void spans(const Ray& ray, double t_min, double t_max, TraceScratch& scratch, SpanList& out) const override;
-    /// When the tile misses the search region or the gate, or the leaf's
-    /// tile proof has proven it (ProvenTiles).
+    /// When the tile misses the search region or the gate (their boxes, or
+    /// a sphere's own), or the leaf's tile proof has proven it (ProvenTiles).
     bool misses_tile(const CameraFrustum& tile, TraceScratch& scratch) const override;
 
     /// The unit outward normal at a boundary point, in the leaf's own space:
