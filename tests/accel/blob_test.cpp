@@ -13,6 +13,7 @@
 #include <memory>
 #include <random>
 
+#include "support/camera_tiles.hpp"
 #include "zeroset/accel/blob.hpp"
 #include "zeroset/accel/implicit_leaf.hpp"
 #include "zeroset/accel/trace_scratch.hpp"
@@ -131,23 +132,6 @@ std::shared_ptr<const BlobModel> random_blob(BlobKernel kernel, std::uint32_t se
         components.push_back(c);
     }
     return std::make_shared<const BlobModel>(kernel, 0.5, std::move(components));
-}
-
-/// An 8 × 8-pixel camera tile from `origin` looking along `forward`, its
-/// pixels `pixel` wide on the image plane, its corner at (u0, v0).
-CameraFrustum eight_pixel_tile(const Vec3d& origin, const Vec3d& forward, double pixel, double u0, double v0) {
-    CameraFrustum f;
-    f.origin = origin;
-    f.forward = normalize(forward);
-    f.right = normalize(cross(Vec3d{0, 1, 0}, f.forward));
-    f.up = cross(f.forward, f.right);
-    f.columns = f.rows = 8;
-    f.du = pixel;
-    f.dv = -pixel;
-    f.u0 = u0;
-    f.v0 = v0;
-    f.serial = CameraFrustum::new_serial();
-    return f;
 }
 
 struct Comparison {
@@ -341,7 +325,7 @@ TEST(Blob, ACameraTilesRaysMeetTheComponentsByItsList) {
         TraceScratch scratch(1);
         int hits = 0;
         for (int tile = 0; tile < 6; ++tile) {
-            const CameraFrustum f = eight_pixel_tile({0.4, -0.3, -12.0}, {-0.03, 0.02, 1.0}, 0.006, -0.3 + 0.1 * tile,
+            const CameraFrustum f = test::square_tile({0.4, -0.3, -12.0}, {-0.03, 0.02, 1.0}, 8, 0.006, -0.3 + 0.1 * tile,
                                                      0.25 - 0.09 * tile);
             for (int py = 0; py < f.rows; ++py)
                 for (int px = 0; px < f.columns; ++px) {
@@ -378,7 +362,7 @@ TEST(Blob, NoRayOfATileItMissesHitsIt) {
         for (int ty = 0; ty < 12; ++ty)
             for (int tx = 0; tx < 12; ++tx) {
                 const CameraFrustum f =
-                    eight_pixel_tile({0.4, -0.3, -6.0}, {-0.05, 0.04, 1.0}, 0.009, -0.45 + 0.072 * tx, 0.45 - 0.072 * ty);
+                    test::square_tile({0.4, -0.3, -6.0}, {-0.05, 0.04, 1.0}, 8, 0.009, -0.45 + 0.072 * tx, 0.45 - 0.072 * ty);
                 if (!blob.misses_tile(f, scratch)) continue;
                 ++missed;
                 bool within_reach = false;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <random>
 
+#include "support/camera_tiles.hpp"
 #include "zeroset/accel/csg.hpp"
 #include "zeroset/accel/group.hpp"
 #include "zeroset/accel/half_space.hpp"
@@ -313,6 +314,7 @@ TEST(Primitives, APlaneTakesPartInCsg) {
     EXPECT_NEAR(corner->t, 3.0, 1e-12);
 }
 
+
 // An instance asks its child whether a camera tile misses it with the tile
 // carried into the child's space, where the child's own box is tighter
 // than the instance's box around it — unless its map is far from a
@@ -331,17 +333,8 @@ TEST(Primitives, AnInstanceAsksItsChildOfATileOnlyThroughAWellConditionedMap) {
         TraceScratch scratch(leaves.count());
         int child_proved = 0;
         for (int i = 0; i < 400; ++i) {
-            CameraFrustum f;
-            f.origin = {0.0, 0.0, -6.0};
-            f.forward = {0.0, 0.0, 1.0};
-            f.right = {1.0, 0.0, 0.0};
-            f.up = {0.0, 1.0, 0.0};
-            f.columns = f.rows = 4;
-            f.du = 0.01;
-            f.dv = -0.01;
-            f.u0 = u(random);
-            f.v0 = u(random);
-            f.serial = CameraFrustum::new_serial();
+            const double u0 = u(random), v0 = u(random);  // in this order, whatever the compiler
+            const CameraFrustum f = test::square_tile({0.0, 0.0, -6.0}, {0.0, 0.0, 1.0}, 4, 0.01, u0, v0);
             const bool by_box = f.misses(placed.bounds());
             const bool missed = placed.misses_tile(f, scratch);
             EXPECT_TRUE(missed || !by_box);
@@ -373,17 +366,8 @@ TEST(Primitives, ALeafPassesTheTilesBesideItsSphereNotOnlyBesideItsBox) {
         TraceScratch scratch(1);
         int beside_box_only = 0;
         for (int i = 0; i < 400; ++i) {
-            CameraFrustum f;
-            f.origin = {0.0, 0.0, -6.0};
-            f.forward = {0.0, 0.0, 1.0};
-            f.right = {1.0, 0.0, 0.0};
-            f.up = {0.0, 1.0, 0.0};
-            f.columns = f.rows = 4;
-            f.du = 0.005;
-            f.dv = -0.005;
-            f.u0 = u(random);
-            f.v0 = u(random);
-            f.serial = CameraFrustum::new_serial();
+            const double u0 = u(random), v0 = u(random);  // in this order, whatever the compiler
+            const CameraFrustum f = test::square_tile({0.0, 0.0, -6.0}, {0.0, 0.0, 1.0}, 4, 0.005, u0, v0);
             if (!leaf.misses_tile(f, scratch)) continue;
             if (!f.misses(around({0, 0, 0}, 1.0))) ++beside_box_only;
             for (double a = 0.0; a <= 1.0; a += 0.125) {
