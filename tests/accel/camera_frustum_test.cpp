@@ -9,6 +9,7 @@
 #include <limits>
 #include <random>
 
+#include "support/camera_tiles.hpp"
 #include "zeroset/accel/camera_frustum.hpp"
 
 namespace zeroset {
@@ -163,12 +164,9 @@ TEST(CameraFrustum, NoRayOfTheTileComesNearerASegmentThanItsDistanceOutside) {
         const double bound = f.distance_outside(a, b, planes);
         ASSERT_GE(bound, 0.0);
         double nearest = INFINITY;
-        const auto ray_through = [&](double cu, double cv) {
-            return Ray{f.origin, f.forward + f.right * (f.u0 + cu * f.columns * f.du) + f.up * (f.v0 + cv * f.rows * f.dv)};
-        };
         for (const double cu : {0.0, 1.0})
-            for (const double cv : {0.0, 1.0}) nearest = std::min(nearest, distance_segment_to_ray(a, b, ray_through(cu, cv)));
-        for (int k = 0; k < 60; ++k) nearest = std::min(nearest, distance_segment_to_ray(a, b, ray_through(unit(rng), unit(rng))));
+            for (const double cv : {0.0, 1.0}) nearest = std::min(nearest, distance_segment_to_ray(a, b, test::tile_ray(f, cu, cv)));
+        for (int k = 0; k < 60; ++k) nearest = std::min(nearest, distance_segment_to_ray(a, b, test::tile_ray(f, unit(rng), unit(rng))));
         EXPECT_LE(bound, nearest * (1.0 + 1e-12)) << "segment " << i;
         if (bound > 0.0) ++apart;
         if (bound > 0.5 * nearest && nearest > 0.1) ++tight;

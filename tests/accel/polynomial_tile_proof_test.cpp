@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "support/camera_tiles.hpp"
 #include "zeroset/accel/polynomial_tile_proof.hpp"
 #include "zeroset/expr/evaluator.hpp"
 
@@ -122,8 +123,9 @@ TEST(PolynomialTileProof, LebesgueConstantsBoundEquispacedInterpolation) {
 }
 
 Ray ray_of(const CameraFrustum& tile, double a, double b) {
-    const double u = tile.u0 + a * tile.columns * tile.du, v = tile.v0 + b * tile.rows * tile.dv;
-    return {tile.origin, normalize(tile.forward + tile.right * u + tile.up * v)};
+    Ray ray = test::tile_ray(tile, a, b);
+    ray.dir = normalize(ray.dir);
+    return ray;
 }
 
 TEST(ProvenTiles, ATileIsTriedAfterAMissAndAnswersItsRays) {

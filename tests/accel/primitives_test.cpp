@@ -314,7 +314,6 @@ TEST(Primitives, APlaneTakesPartInCsg) {
     EXPECT_NEAR(corner->t, 3.0, 1e-12);
 }
 
-
 // An instance asks its child whether a camera tile misses it with the tile
 // carried into the child's space, where the child's own box is tighter
 // than the instance's box around it — unless its map is far from a
@@ -373,9 +372,9 @@ TEST(Primitives, ALeafPassesTheTilesBesideItsSphereNotOnlyBesideItsBox) {
             for (double a = 0.0; a <= 1.0; a += 0.125) {
                 for (double b = 0.0; b <= 1.0; b += 0.125) {
                     // The rays through the tile's rectangle, edges included.
-                    const Vec3d dir = f.forward + f.right * (f.u0 + a * f.columns * f.du) + f.up * (f.v0 + b * f.rows * f.dv);
-                    const double along = -dot(f.origin, dir) / dot(dir, dir);
-                    EXPECT_GT(length(f.origin + dir * along), 1.0);
+                    const Ray ray = test::tile_ray(f, a, b);
+                    const double along = -dot(ray.origin, ray.dir) / dot(ray.dir, ray.dir);
+                    EXPECT_GT(length(ray.at(along)), 1.0);
                 }
             }
         }

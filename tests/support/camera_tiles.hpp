@@ -1,8 +1,9 @@
-// A camera tile for tests of what a tile's rays can meet (misses_tile,
-// tile proofs): square, from a point, with +y up.
+// Camera tiles for tests of what a tile's rays can meet (misses_tile,
+// tile proofs): a square one from a point with +y up, and a tile's rays.
 #pragma once
 
 #include "zeroset/accel/camera_frustum.hpp"
+#include "zeroset/math/ray.hpp"
 
 namespace zeroset::test {
 
@@ -23,6 +24,12 @@ inline CameraFrustum square_tile(const Vec3d& origin, const Vec3d& forward, int 
     f.v0 = v0;
     f.serial = CameraFrustum::new_serial();
     return f;
+}
+
+/// The tile's ray through the point (a, b) of its rectangle, (0, 0) its
+/// corner (u0, v0) and (1, 1) the one opposite; its direction not normalised.
+inline Ray tile_ray(const CameraFrustum& f, double a, double b) {
+    return {f.origin, f.forward + f.right * (f.u0 + a * f.columns * f.du) + f.up * (f.v0 + b * f.rows * f.dv)};
 }
 
 }  // namespace zeroset::test
